@@ -1,0 +1,82 @@
+// The back end: one program + stage + keyword list -> SPIR-V (glslang),
+// validated (spirv-val), optimised (spirv-opt), cross-compiled (SPIRV-Cross)
+// and reflected.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "facet/diagnostics.h"
+#include "facet/ir.h"
+#include "facet/reflection.h"
+#include "facet/result.h"
+#include "facet/source.h"
+#include "facet/stage.h"
+
+namespace facet::backend {
+
+enum class OptLevel : uint8_t { none, size, performance };  // -O0, -Os, -O
+enum class TargetEnv : uint8_t { vulkan1_1, vulkan1_2, opengl4_5 };
+enum class CrossTarget : uint8_t { glsl450, essl300, msl };
+
+// An included file found by a resolver: its canonical path and text.
+struct IncludedFile {
+  std::string path;
+  std::string text;
+};
+
+// Finds `requested` for an #include in `includer` (a path). nullopt: not found.
+using IncludeResolver =
+    std::function<std::optional<IncludedFile>(const std::string& requested, const std::string& includer)>;
+
+struct BackendOptions {
+  OptLevel opt = OptLevel::performance;
+  TargetEnv target = TargetEnv::vulkan1_1;
+  bool debug_info = false;                // -g
+  std::vector<std::string> include_dirs;  // -I, searched after the includer's folder
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
+  std::string stdlib_dir;                 // searched last
+  // When set, used instead of the file system (in-memory compiles).
+  IncludeResolver resolver;
+};
+
+struct CompiledStage {
+  Stage stage = Stage::vertex;
+  std::vector<uint32_t> spirv;
+  StageReflection reflection;
+  std::vector<std::string> included_files;  // every file opened, transitively, sorted
+};
+
+// Owns glslang's process initialisation for its lifetime (one per process is
+// enough; several are safe). Calls that share a SourceMap must not overlap.
+class Backend {
+ public:
+  Backend();
+  ~Backend();
+  Backend(const Backend&) = delete;
+  Backend& operator=(const Backend&) = delete;
+
+  // The text glslang would see for this stage and keywords (prelude, defines,
+  // #line-mapped program), after preprocessing when `preprocess` is true.
+  Result<std::string> source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                                  const std::vector<std::string>& keywords, const BackendOptions& options,
+                                  bool preprocess, SourceMap& sources, Diagnostics& diags) const;
+
+  // Compiles one stage of one variant. Errors are mapped to .shader positions.
+  Result<CompiledStage> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                                const std::vector<std::string>& keywords, const BackendOptions& options,
+                                SourceMap& sources, Diagnostics& diags) const;
+};
+
+Result<std::string> cross_compile(const std::vector<uint32_t>& spirv, Stage stage, CrossTarget target,
+                                  Diagnostics& diags);
+std::string disassemble(const std::vector<uint32_t>& spirv);
+// spirv-val; false and a diagnostic when invalid.
+bool validate(const std::vector<uint32_t>& spirv, TargetEnv target, Diagnostics& diags);
+
+}  // namespace facet::backend
