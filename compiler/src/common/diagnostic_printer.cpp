@@ -1,0 +1,138 @@
+// GCC/Clang-style text and JSON renderings of Diagnostics.
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "facet/diagnostics.h"
+
+namespace facet {
+namespace {
+
+std::string_view severity_word(Severity s) {
+  switch (s) {
+    case Severity::note: return "note";
+    case Severity::warning: return "warning";
+    case Severity::error: return "error";
+  }
+  return "error";
+}
+
+std::string_view severity_color(Severity s) {
+  switch (s) {
+    case Severity::note: return "\x1b[1;36m";
+    case Severity::warning: return "\x1b[1;35m";
+    case Severity::error: return "\x1b[1;31m";
+  }
+  return "";
+}
+
+std::string location_prefix(const SourceSpan& span, const SourceMap& sources) {
+  if (!span.has_location() || span.file >= sources.file_count()) return "facet: ";
+  LineColumn lc = sources.line_column(span.file, span.begin);
+  return fmt::format("{}:{}:{}: ", sources.path(span.file), lc.line, lc.column);
+}
+
+// "   12 |     foo bar\n      |     ^~~\n". Tabs are kept so the caret lines up.
+std::string source_excerpt(const SourceSpan& span, const SourceMap& sources, const RenderOptions& options) {
+  if (!span.has_location() || span.file >= sources.file_count()) return {};
+  LineColumn begin = sources.line_column(span.file, span.begin);
+  std::string_view line = sources.line_text(span.file, begin.line);
+  if (line.empty() && sources.text(span.file).empty()) return {};
+  std::string gutter = fmt::format("{:>5}", begin.line);
+  std::string marker;
+  size_t caret_at = std::min<size_t>(begin.column - 1, line.size());
+  for (size_t i = 0; i < caret_at; ++i) marker += line[i] == '\t' ? '\t' : ' ';
+  size_t length = span.end > span.begin ? span.end - span.begin : 1;
+  length = std::max<size_t>(1, std::min(length, line.size() > caret_at ? line.size() - caret_at : 1));
+  marker += options.color ? "\x1b[1;32m^" : "^";
+  marker += std::string(length - 1, '~');
+  if (options.color) marker += "\x1b[0m";
+  return fmt::format("{} | {}\n{} | {}\n", gutter, line, std::string(gutter.size(), ' '), marker);
+}
+
+std::string headline(Severity severity, const SourceSpan& span, const std::string& message,
+                     const SourceMap& sources, const RenderOptions& options, std::string_view suffix) {
+  std::string where = location_prefix(span, sources);
+  if (options.color) {
+    return fmt::format("\x1b[1m{}\x1b[0m{}{}:\x1b[0m \x1b[1m{}\x1b[0m{}\n", where, severity_color(severity),
+                       severity_word(severity), message, suffix);
+  }
+  return fmt::format("{}{}: {}{}\n", where, severity_word(severity), message, suffix);
+}
+
+}  // namespace
+
+std::string render_text(const Diagnostics& diags, const SourceMap& sources, const RenderOptions& options) {
+  std::string out;
+  for (const Diagnostic& d : diags.all()) {
+    for (auto it = d.include_stack.rbegin(); it != d.include_stack.rend(); ++it) {
+      if (!it->has_location()) continue;
+      LineColumn lc = sources.line_column(it->file, it->begin);
+      out += fmt::format("In file included from {}:{}:\n", sources.path(it->file), lc.line);
+    }
+    std::string suffix;
+    std::string_view group = diag_group(d.id);
+    if (d.severity == Severity::warning && !group.empty()) suffix += fmt::format(" [-W{}]", group);
+    if (d.variant_total > 1) suffix += fmt::format(" [in {} of {} variants]", d.variant_hits, d.variant_total);
+    out += headline(d.severity, d.span, d.message, sources, options, suffix);
+    if (options.show_source_line) out += source_excerpt(d.span, sources, options);
+    for (const FixIt& fix : d.fixits) {
+      if (!fix.replacement.empty()) out += fmt::format("      | fix: replace with '{}'\n", fix.replacement);
+    }
+    for (const DiagNote& note : d.notes) {
+      out += headline(Severity::note, note.span, note.message, sources, options, "");
+      if (options.show_source_line && note.span.has_location()) out += source_excerpt(note.span, sources, options);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+nlohmann::json location_json(const SourceSpan& span, const SourceMap& sources) {
+  nlohmann::json j = nlohmann::json::object();
+  if (!span.has_location() || span.file >= sources.file_count()) return j;
+  LineColumn b = sources.line_column(span.file, span.begin);
+  LineColumn e = sources.line_column(span.file, span.end);
+  j["file"] = sources.path(span.file);
+  j["line"] = b.line;
+  j["column"] = b.column;
+  j["end_line"] = e.line;
+  j["end_column"] = e.column;
+  return j;
+}
+
+}  // namespace
+
+std::string render_json(const Diagnostics& diags, const SourceMap& sources) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Diagnostic& d : diags.all()) {
+    nlohmann::json j = location_json(d.span, sources);
+    j["id"] = std::string(diag_name(d.id));
+    j["severity"] = std::string(severity_word(d.severity));
+    j["message"] = d.message;
+    j["group"] = std::string(diag_group(d.id));
+    if (d.variant_total > 1) j["variants"] = {{"hits", d.variant_hits}, {"total", d.variant_total}};
+    nlohmann::json notes = nlohmann::json::array();
+    for (const DiagNote& n : d.notes) {
+      nlohmann::json nj = location_json(n.span, sources);
+      nj["message"] = n.message;
+      notes.push_back(std::move(nj));
+    }
+    j["notes"] = std::move(notes);
+    nlohmann::json fixits = nlohmann::json::array();
+    for (const FixIt& f : d.fixits) {
+      nlohmann::json fj = location_json(f.span, sources);
+      fj["replacement"] = f.replacement;
+      fixits.push_back(std::move(fj));
+    }
+    j["fixits"] = std::move(fixits);
+    nlohmann::json includes = nlohmann::json::array();
+    for (const SourceSpan& s : d.include_stack) includes.push_back(location_json(s, sources));
+    j["include_stack"] = std::move(includes);
+    list.push_back(std::move(j));
+  }
+  return list.dump(2) + "\n";
+}
+
+}  // namespace facet

@@ -1,0 +1,127 @@
+#include "facet/diagnostics.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <tuple>
+
+#include "facet/result.h"
+
+namespace facet {
+namespace {
+
+struct DiagInfo {
+  std::string_view name;
+  Severity severity;
+  std::string_view group;
+};
+
+constexpr std::array<DiagInfo, size_t(DiagId::count_)> kDiagTable = {{
+#define FACET_DIAG(name, severity, group) {#name, Severity::severity, group},
+#include "facet/diag/driver.def"
+#include "facet/diag/shaderlab.def"
+#include "facet/diag/sema.def"
+#include "facet/diag/variants.def"
+#include "facet/diag/backend.def"
+#include "facet/diag/package.def"
+#undef FACET_DIAG
+}};
+
+const DiagInfo& info(DiagId id) {
+  size_t index = size_t(id);
+  if (index >= kDiagTable.size()) FACET_ICE("diagnostic id out of range");
+  return kDiagTable[std::min(index, kDiagTable.size() - 1)];
+}
+
+}  // namespace
+
+std::string_view diag_name(DiagId id) { return info(id).name; }
+Severity diag_default_severity(DiagId id) { return info(id).severity; }
+std::string_view diag_group(DiagId id) { return info(id).group; }
+
+Diagnostic& Diagnostics::add(DiagId id, SourceSpan span, std::string message) {
+  return add(id, diag_default_severity(id), span, std::move(message));
+}
+
+Diagnostic& Diagnostics::add(DiagId id, Severity severity, SourceSpan span, std::string message) {
+  Diagnostic d;
+  d.id = id;
+  d.severity = severity;
+  d.span = span;
+  d.message = std::move(message);
+  items_.push_back(std::move(d));
+  return items_.back();
+}
+
+void Diagnostics::append(const Diagnostics& other) {
+  items_.insert(items_.end(), other.items_.begin(), other.items_.end());
+}
+
+void Diagnostics::push(Diagnostic d) { items_.push_back(std::move(d)); }
+
+size_t Diagnostics::error_count() const {
+  return size_t(std::count_if(items_.begin(), items_.end(),
+                              [](const Diagnostic& d) { return d.severity == Severity::error; }));
+}
+
+size_t Diagnostics::warning_count() const {
+  return size_t(std::count_if(items_.begin(), items_.end(),
+                              [](const Diagnostic& d) { return d.severity == Severity::warning; }));
+}
+
+Diagnostics apply_warning_options(const Diagnostics& diags, const WarningOptions& options) {
+  Diagnostics out;
+  for (Diagnostic d : diags.all()) {
+    if (d.severity == Severity::warning) {
+      std::string_view group = diag_group(d.id);
+      bool disabled = std::find(options.disabled_groups.begin(), options.disabled_groups.end(), group) !=
+                      options.disabled_groups.end();
+      if (options.suppress_all || disabled) continue;
+      if (options.warnings_as_errors) d.severity = Severity::error;
+    }
+    out.push(std::move(d));
+  }
+  return out;
+}
+
+namespace {
+
+// Two diagnostics from different variants are "the same" when everything a
+// reader sees is the same.
+auto identity(const Diagnostic& d) {
+  return std::make_tuple(d.id, d.severity, d.span.file, d.span.begin, d.span.end, d.message);
+}
+
+}  // namespace
+
+Diagnostics merge_variant_duplicates(const std::vector<Diagnostics>& per_variant) {
+  Diagnostics out;
+  std::map<decltype(identity(Diagnostic{})), size_t> seen;
+  std::vector<uint64_t> hits;
+  for (const Diagnostics& list : per_variant) {
+    std::map<size_t, bool> counted_here;
+    for (const Diagnostic& d : list.all()) {
+      auto key = identity(d);
+      auto it = seen.find(key);
+      if (it == seen.end()) {
+        seen.emplace(key, out.size());
+        counted_here[out.size()] = true;
+        out.push(d);
+        hits.push_back(1);
+      } else if (!counted_here[it->second]) {
+        counted_here[it->second] = true;
+        ++hits[it->second];
+      }
+    }
+  }
+  auto& items = out.mutable_all();
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (per_variant.size() > 1) {
+      items[i].variant_hits = hits[i];
+      items[i].variant_total = per_variant.size();
+    }
+  }
+  return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# facet's main job on a fresh Debian 12 machine: install dependencies, build,
+# then compile every example shader (all variants) into .facetpkg packages and
+# print what was built.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/install-deps.sh"
+"$root/scripts/build.sh" "$root/build"
+out="$root/out/packages"
+mkdir -p "$out"
+"$root/build/compiler/facetc" --all-variants --stats --out-dir "$out" "$root"/examples/shaders/*.shader
+echo "packages written to $out"

@@ -1,0 +1,92 @@
+#include "facet/diagnostics.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace facet {
+namespace {
+
+TEST(SourceMapTest, LineColumnIsOneBasedAndCountsBytes) {
+  SourceMap sources;
+  FileId f = sources.add_file("a.shader", "ab\ncde\n\nf");
+  EXPECT_EQ(sources.line_column(f, 0).line, 1u);
+  EXPECT_EQ(sources.line_column(f, 0).column, 1u);
+  EXPECT_EQ(sources.line_column(f, 4).line, 2u);
+  EXPECT_EQ(sources.line_column(f, 4).column, 2u);
+  EXPECT_EQ(sources.line_column(f, 8).line, 4u);
+  EXPECT_EQ(sources.line_text(f, 2), "cde");
+  EXPECT_EQ(sources.line_text(f, 3), "");
+  EXPECT_EQ(sources.line_count(f), 4u);
+  EXPECT_EQ(sources.offset_of(f, 2, 3), 5u);
+  // Out-of-range offsets clamp instead of reading past the text.
+  EXPECT_EQ(sources.line_column(f, 1000).line, 4u);
+  EXPECT_EQ(sources.line_text(f, 99), "");
+}
+
+TEST(SourceMapTest, CarriageReturnsAreNotPartOfTheLine) {
+  SourceMap sources;
+  FileId f = sources.add_file("crlf.shader", "x\r\ny\r\n");
+  EXPECT_EQ(sources.line_text(f, 1), "x");
+}
+
+TEST(DiagnosticsRenderTest, TextHasLocationSourceLineAndCaret) {
+  SourceMap sources;
+  FileId f = sources.add_file("s.shader", "Shader \"A\" {\n  Cull Sideways\n}\n");
+  Diagnostics diags;
+  diags.add(DiagId::parse_unexpected_token, {f, 20, 28}, "unknown cull mode 'Sideways'")
+      .note({f, 0, 6}, "in this shader");
+  std::string text = render_text(diags, sources);
+  EXPECT_NE(text.find("s.shader:2:8: error: unknown cull mode 'Sideways'\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("    2 |   Cull Sideways\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("      |        ^~~~~~~~\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.shader:1:1: note: in this shader"), std::string::npos) << text;
+  EXPECT_EQ(diags.error_count(), 1u);
+}
+
+TEST(DiagnosticsRenderTest, UnlocatedDiagnosticsSayFacet) {
+  SourceMap sources;
+  Diagnostics diags;
+  diags.add(DiagId::io_cannot_read, {}, "cannot open 'x.shader'");
+  EXPECT_EQ(render_text(diags, sources), "facet: error: cannot open 'x.shader'\n");
+}
+
+TEST(DiagnosticsRenderTest, JsonCarriesIdSeverityAndPosition) {
+  SourceMap sources;
+  FileId f = sources.add_file("s.shader", "abc\ndef\n");
+  Diagnostics diags;
+  diags.add(DiagId::parse_unexpected_token, {f, 5, 6}, "bad");
+  auto j = nlohmann::json::parse(render_json(diags, sources));
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["id"], "parse_unexpected_token");
+  EXPECT_EQ(j[0]["severity"], "error");
+  EXPECT_EQ(j[0]["line"], 2);
+  EXPECT_EQ(j[0]["column"], 2);
+}
+
+TEST(DiagnosticsMergeTest, IdenticalMessagesFromVariantsMergeWithCounts) {
+  std::vector<Diagnostics> per_variant(4);
+  for (size_t i = 0; i < per_variant.size(); ++i) {
+    if (i != 2) per_variant[i].add(DiagId::parse_unexpected_token, {0, 1, 2}, "same");
+    if (i == 3) per_variant[i].add(DiagId::parse_unexpected_token, {0, 1, 2}, "other");
+  }
+  Diagnostics merged = merge_variant_duplicates(per_variant);
+  ASSERT_EQ(merged.size(), 2u);
+  EXPECT_EQ(merged.all()[0].variant_hits, 3u);
+  EXPECT_EQ(merged.all()[0].variant_total, 4u);
+  EXPECT_EQ(merged.all()[1].variant_hits, 1u);
+  SourceMap sources;
+  sources.add_file("f", "abc");
+  EXPECT_NE(render_text(merged, sources).find("[in 3 of 4 variants]"), std::string::npos);
+}
+
+TEST(DiagnosticsWarningOptionsTest, WerrorPromotesAndWSuppresses) {
+  Diagnostics diags;
+  diags.add(DiagId::parse_unexpected_token, Severity::warning, {}, "w");
+  WarningOptions werror{.warnings_as_errors = true};
+  EXPECT_EQ(apply_warning_options(diags, werror).error_count(), 1u);
+  WarningOptions quiet{.suppress_all = true};
+  EXPECT_EQ(apply_warning_options(diags, quiet).size(), 0u);
+}
+
+}  // namespace
+}  // namespace facet
