@@ -1,0 +1,106 @@
+// facet's compiler library for engines: load a .shader (from disk or memory),
+// pick passes and variants, compile them to SPIR-V with reflection, and get a
+// Package plus diagnostics as data.
+//
+//   facet::Compiler compiler;
+//   facet::SourceMap sources;
+//   facet::Diagnostics diags;
+//   auto shader = compiler.load("Lit.shader", sources, diags);
+//   if (!shader) { std::cerr << facet::render_text(diags, sources); return 1; }
+//   auto out = compiler.compile(*shader, {.keywords = {{"FOG_LINEAR"}}}, sources, diags);
+//   // out->package.passes[i].variants[j].stages[k] -> SPIR-V + reflection
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/backend.h"
+#include "facet/diagnostics.h"
+#include "facet/ir.h"
+#include "facet/package.h"
+#include "facet/result.h"
+#include "facet/source.h"
+#include "facet/variants.h"
+
+namespace facet {
+
+// The compiler's version string, e.g. "facet 0.1.0 (glslang 12, SPIRV-Cross ...)".
+std::string version_string();
+// Where the stdlib includes are: $FACET_STDLIB_DIR, else the source tree's
+// stdlib/ for a build-tree binary, else the installed share/facet/stdlib.
+std::string default_stdlib_dir();
+
+struct CompileOptions {
+  backend::BackendOptions backend;
+  // Pass names (case-insensitive) or 0-based indices into the chosen
+  // SubShader's passes; empty: every pass.
+  std::vector<std::string> passes;
+  // nullopt: every variant of each pass. Otherwise the one variant that
+  // Unity's selection rule picks for these enabled keywords.
+  std::optional<std::vector<std::string>> keywords;
+  // With `keywords`: a keyword set that has no exact variant is an error.
+  bool strict_selection = false;
+  // Refuse to compile more variants than this for one pass (0: no limit).
+  uint64_t max_variants_per_pass = 65536;
+};
+
+struct CompileStats {
+  uint64_t passes = 0;
+  uint64_t variants = 0;        // variants compiled
+  uint64_t stage_programs = 0;  // (variant, stage) pairs compiled
+  uint64_t unique_spirv = 0;    // distinct SPIR-V blobs stored
+  double seconds = 0;
+};
+
+struct CompiledShader {
+  package::Package package;
+  std::vector<std::string> dependencies;  // the .shader and every included file, sorted
+  CompileStats stats;
+};
+
+// A pass chosen for compilation: where it is in the IR and its keyword space.
+struct SelectedPass {
+  size_t subshader = 0;
+  size_t pass = 0;
+  const ir::Pass* ir = nullptr;  // points into the ir::Shader it was selected from
+  variants::KeywordSpace keywords;
+};
+
+class Compiler {
+ public:
+  Compiler() = default;
+
+  // Reads and parses a file. Refuses binary files and files over 64 MiB.
+  Result<ir::Shader> load(const std::string& path, SourceMap& sources, Diagnostics& diags) const;
+  // Parses an in-memory text; `path` names it in diagnostics and anchors
+  // relative #includes.
+  Result<ir::Shader> load_source(const std::string& path, std::string text, SourceMap& sources,
+                                 Diagnostics& diags) const;
+
+  // The passes `options.passes` names (all by default) of the SubShader in
+  // use, with their keyword spaces.
+  Result<std::vector<SelectedPass>> select_passes(const ir::Shader& shader, const CompileOptions& options,
+                                                  Diagnostics& diags) const;
+
+  // The variants of one pass that `options` asks for.
+  Result<std::vector<variants::VariantKey>> select_variants(const SelectedPass& pass, const CompileOptions& options,
+                                                            Diagnostics& diags) const;
+
+  // Compiles the selected passes and variants into a package. Identical
+  // messages from many variants are merged ("in 12 of 48 variants").
+  Result<CompiledShader> compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
+                                 Diagnostics& diags) const;
+
+  const backend::Backend& backend() const { return backend_; }
+
+ private:
+  backend::Backend backend_;
+};
+
+// Writes `bytes` to `path` through a temporary file and a rename, so that a
+// failure never leaves a partial file behind.
+Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags);
+
+}  // namespace facet
