@@ -20,6 +20,16 @@
 
 namespace facet::backend {
 
+// The binding model (docs/binding-model.md): descriptor sets by update rate.
+// The stdlib declares its cbuffers and textures with explicit register(x, spaceN);
+// everything a program declares without a space lands in kMaterialSet.
+inline constexpr uint32_t kFrameSet = 0;     // camera, time, fog, environment: cbuffer FacetPerFrame
+inline constexpr uint32_t kLightSet = 1;     // the pass's light: cbuffer FacetPerLight, light textures
+inline constexpr uint32_t kMaterialSet = 2;  // "$Globals" at binding 0, then textures/cbuffers in declaration order
+inline constexpr uint32_t kDrawSet = 3;      // the object: cbuffer FacetPerDraw
+// The block that holds a program's loose uniforms (`float4 _Color;`).
+inline constexpr const char* kGlobalsBlock = "$Globals";
+
 enum class OptLevel : uint8_t { none, size, performance };  // -O0, -Os, -O
 enum class TargetEnv : uint8_t { vulkan1_1, vulkan1_2, opengl4_5 };
 enum class CrossTarget : uint8_t { glsl450, essl300, msl };
@@ -54,6 +64,14 @@ struct CompiledStage {
 
 // Owns glslang's process initialisation for its lifetime (one per process is
 // enough; several are safe). Calls that share a SourceMap must not overlap.
+//
+//   backend::Backend backend;
+//   Diagnostics diags;
+//   auto fs = backend.compile(shader, program, Stage::fragment, {"FOG_EXP2"},
+//                             {.opt = backend::OptLevel::performance}, sources, diags);
+//   if (!fs) return;                        // diags say why, at .shader positions
+//   auto glsl = backend::cross_compile(fs->spirv, Stage::fragment, backend::CrossTarget::glsl450, diags);
+//   nlohmann::json j = fs->reflection;     // facet/reflection_json.h
 class Backend {
  public:
   Backend();
@@ -72,6 +90,10 @@ class Backend {
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
                                 SourceMap& sources, Diagnostics& diags) const;
 };
+
+// The stdlib folder used when BackendOptions::stdlib_dir is empty: $FACET_STDLIB_DIR,
+// else the source tree's stdlib/ (a build tree), else the installed one.
+std::string default_stdlib_dir();
 
 Result<std::string> cross_compile(const std::vector<uint32_t>& spirv, Stage stage, CrossTarget target,
                                   Diagnostics& diags);

@@ -52,11 +52,42 @@ struct Package {
   std::vector<std::vector<uint32_t>> spirv_blobs;
 };
 
-// Deterministic bytes: the same Package gives the same bytes.
+// Deterministic bytes: the same Package gives the same bytes. Layout in
+// docs/package-format.md. Any Package can be written; read_package accepts
+// the bytes back (and gives an equal Package, spans aside) exactly when
+// validate_package accepts the Package and its strings stay within the
+// reader's expansion limit (decoded string bytes at most 64 x file size +
+// 1 MiB, and 1 GiB in all).
 std::vector<uint8_t> write_package(const Package& package);
-// `file` is used for diagnostics ("corrupt package: ..."); no spans into binary.
+
+struct ReadOptions {
+  // Off only for fuzzers and tests that reach the structural checks behind
+  // the checksum; everything else is validated either way.
+  bool verify_checksum = true;
+};
+
+// Validates every byte: magic, version, checksum, section bounds, counts,
+// string and blob indices, enum values, and the invariants of validate_package.
+// Errors are DiagId::package_corrupt diagnostics without a span ("corrupt
+// package: <what> at byte offset N"); never throws. Package::version is the
+// file's format version; SourceSpans read back as default spans.
 Result<Package> read_package(std::span<const uint8_t> bytes, Diagnostics& diags);
-// A stable JSON view of the whole package (SPIR-V as word counts + hashes).
+Result<Package> read_package(std::span<const uint8_t> bytes, Diagnostics& diags, const ReadOptions& options);
+
+// Checks the invariants that read_package enforces beyond the byte layout:
+// blob indices in range, variants strictly sorted by key, each key has one
+// choice per keyword set and each choice is in range (or kOffChoice), stages
+// strictly in Stage order, block members nested at most 32 levels, no
+// render-state value with both a literal and a property. Reports each problem
+// as package_corrupt ("invalid package: ...") and returns false if any.
+bool validate_package(const Package& package, Diagnostics& diags);
+
+// Stores identical SPIR-V blobs once and drops unreferenced ones, remapping
+// PackageStage::blob; blobs keep the order of their first reference.
+void deduplicate_blobs(Package& package);
+
+// A stable JSON view of the whole package (SPIR-V as word counts + hashes);
+// keys in a fixed order, documented in docs/package-format.md.
 std::string package_to_json(const Package& package);
 
 }  // namespace facet::package

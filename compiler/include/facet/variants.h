@@ -1,11 +1,21 @@
 // Keyword sets, variant spaces, exact counts, enumeration and selection,
-// following Unity's rules (SPEC.md §3).
+// following Unity's rules (SPEC.md §3; the full rule list is docs/variants.md).
+//
+//   Diagnostics diags;
+//   auto space = variants::build_keyword_space(program, diags);
+//   if (!space) return;                        // errors are in diags
+//   auto counts = variants::count_variants(*space, {.stage = Stage::fragment});
+//   auto keys = variants::enumerate(*space, {.stage = Stage::fragment}, diags);
+//   auto pick = variants::select_variant(*space, material_kw, global_kw, {}, diags);
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "facet/bigcount.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/result.h"
@@ -18,14 +28,18 @@ enum class KeywordDirective : uint8_t { multi_compile, shader_feature, dynamic_b
 // One keyword pragma = one set of mutually exclusive keywords.
 // Invariant: keywords are distinct; "" is the "no keyword" state and, when
 // present, is listed where it was declared ("_" / "__" / implicit first
-// entry of a single-keyword shader_feature).
+// entry of a single-keyword shader_feature). A set holds at least one
+// non-empty keyword, and no non-empty keyword is in two sets of a space.
 struct KeywordSet {
   KeywordDirective directive = KeywordDirective::multi_compile;
   bool local = false;
   StageMask stages = kAllStages;  // narrowed by _vertex/_fragment/... suffixes
   std::vector<std::string> keywords;
   std::string pragma;             // the directive as written, e.g. "shader_feature_local_fragment"
+                                  // or the shortcut, e.g. "multi_compile_fwdbase"
   SourceSpan span;
+
+  bool applies_to(Stage s) const { return (stages & stage_bit(s)) != 0; }
 };
 
 // The keyword space of one program (one pass).
@@ -35,19 +49,131 @@ struct KeywordSpace {
   std::vector<std::string> skip_variants;       // keywords never enabled
 };
 
-// A variant: for each set of the space, the index of its chosen keyword.
+// VariantKey::choice value meaning "this set contributes no keyword": every
+// keyword of the set is in skip_variants (the set keeps only its off state),
+// or the key is a stage projection and the set does not apply to the stage.
+inline constexpr uint32_t kOffChoice = UINT32_MAX;
+
+// A variant: for each set of the space, the index of its chosen keyword (or
+// kOffChoice). Keys order lexicographically, first set most significant,
+// which is also the order enumerate() produces.
 struct VariantKey {
   std::vector<uint32_t> choice;
   bool operator==(const VariantKey&) const = default;
   auto operator<=>(const VariantKey&) const = default;
 };
 
-// Reads every keyword pragma of `program` (shortcuts expanded per SPEC.md §3).
+// The keywords one material enables (Toggle/KeywordEnum-derived included).
+using KeywordList = std::vector<std::string>;
+
+// ---- building -------------------------------------------------------------
+
+// Reads every keyword pragma of `program` (shortcuts expanded per SPEC.md §3)
+// and its skip_variants. Reports every bad pragma before failing; warnings
+// (duplicates, unknown shortcut modifiers, unused skip_variants) survive a
+// success.
 Result<KeywordSpace> build_keyword_space(const ir::Program& program, Diagnostics& diags);
+
+// The names build_keyword_space expands, e.g. "multi_compile_fwdbase", in
+// the order docs/variants.md lists them.
+std::vector<std::string> known_shortcuts();
+
+// ---- keys -----------------------------------------------------------------
 
 // The non-empty keywords of `key` that apply to `stage`, in set order.
 std::vector<std::string> stage_keywords(const KeywordSpace& space, const VariantKey& key, Stage stage);
 // All non-empty keywords of `key`, in set order.
 std::vector<std::string> all_keywords(const KeywordSpace& space, const VariantKey& key);
+// `key` with every set that does not apply to `stage` set to kOffChoice, so
+// that variants differing only in other stages' keywords project equally.
+VariantKey project(const KeywordSpace& space, const VariantKey& key, Stage stage);
+
+// ---- counting -------------------------------------------------------------
+
+// Unity's counting ladder for one pass or one stage of it; each rung is at
+// most the one before. Exact at any size.
+struct VariantCounts {
+  BigCount full;             // product of the set sizes
+  BigCount after_skip;       // skip_variants applied
+  BigCount after_materials;  // shader_feature sets restricted to the combinations
+                             // materials use; equals after_skip without materials
+};
+
+struct CountOptions {
+  // nullopt: the whole pass (every set); a stage: only the sets applying to
+  // it, i.e. the number of distinct programs that stage needs.
+  std::optional<Stage> stage;
+  // nullopt: no material filter. An empty list means "no material uses the
+  // shader", which leaves 0 variants when the view has shader_feature sets.
+  std::optional<std::vector<KeywordList>> materials;
+};
+
+VariantCounts count_variants(const KeywordSpace& space, const CountOptions& options = {});
+
+// ---- enumeration ----------------------------------------------------------
+
+struct EnumerateOptions {
+  std::optional<Stage> stage;        // per-stage view: distinct projections (see project())
+  bool apply_skip_variants = true;
+  std::optional<std::vector<KeywordList>> materials;  // as CountOptions::materials
+  uint64_t max_variants = 65536;     // more than this is an error, never a huge allocation
+};
+
+// Every variant of the view, distinct, in ascending VariantKey order (the
+// first set varies slowest, the last fastest). Fails with a diagnostic
+// giving the exact count when it exceeds options.max_variants.
+Result<std::vector<VariantKey>> enumerate(const KeywordSpace& space, const EnumerateOptions& options,
+                                          Diagnostics& diags);
+
+// ---- selection at draw time -----------------------------------------------
+
+struct SelectOptions {
+  // Unity 2022.2+ strictShaderVariantMatching: no exact match is an error.
+  bool strict = false;
+  // The variants that exist (e.g. a package's); full keys, not projections.
+  // nullptr: every variant of the space after skip_variants.
+  const std::vector<VariantKey>* available = nullptr;
+};
+
+struct Selection {
+  VariantKey key;
+  bool exact = false;  // false: Unity's closest match was used
+  // Enabled keywords that no set or dynamic_branch of the space declares;
+  // they are ignored.
+  std::vector<std::string> unknown_keywords;
+  // Global keywords naming a local keyword; ignored, as in Unity, because a
+  // local keyword is only set per material.
+  std::vector<std::string> ignored_global_keywords;
+  // Enabled dynamic_branch keywords: the uniform bools to set to true.
+  std::vector<std::string> dynamic_branches_on;
+};
+
+// Picks the variant for a draw from material keywords ∪ global keywords.
+// The requested key takes, per set, the enabled keyword; when none is, the
+// set's "_" state if it has one (that is an exact match), else its first
+// entry; entries removed by skip_variants are passed over. Exact match when
+// that key exists; otherwise Unity's closest match: the variant sharing the
+// most enabled keywords, ties to the first declared entries (the smallest
+// key); in strict mode an error naming the keyword combination that has no
+// variant.
+Result<Selection> select_variant(const KeywordSpace& space, const KeywordList& material_keywords,
+                                 const KeywordList& global_keywords, const SelectOptions& options,
+                                 Diagnostics& diags);
+
+// ---- text -----------------------------------------------------------------
+
+struct DumpOptions {
+  StageMask stages = kAllStages;  // stages to print a count line for
+  bool counts = true;             // the counting ladder, pass and stages
+  bool list_variants = false;     // one line per variant of the pass
+  uint64_t max_listed = 4096;     // larger spaces print their count instead
+};
+
+// Stable text for `facetc --dump=variants` / `--list-variants`; the format
+// is documented in docs/variants.md.
+std::string dump_keyword_space(const KeywordSpace& space, const DumpOptions& options = {});
+
+// "multi_compile", "shader_feature", "dynamic_branch".
+std::string_view directive_name(KeywordDirective directive);
 
 }  // namespace facet::variants

@@ -1,0 +1,167 @@
+#include "backend/glslang_frontend.h"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <memory>
+
+namespace facet::backend {
+namespace {
+
+EShLanguage to_glslang(Stage stage) {
+  switch (stage) {
+    case Stage::vertex: return EShLangVertex;
+    case Stage::fragment: return EShLangFragment;
+    case Stage::geometry: return EShLangGeometry;
+    case Stage::hull: return EShLangTessControl;
+    case Stage::domain: return EShLangTessEvaluation;
+  }
+  return EShLangVertex;
+}
+
+bool is_hlsl(ir::ProgramLanguage language) { return language != ir::ProgramLanguage::glsl; }
+
+EShMessages messages_for(ir::ProgramLanguage language, const BackendOptions& options) {
+  int m = EShMsgSpvRules;
+  if (options.target != TargetEnv::opengl4_5) m |= EShMsgVulkanRules;
+  if (is_hlsl(language)) m |= EShMsgReadHlsl | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
+  return EShMessages(m);
+}
+
+// Sets source language, client and SPIR-V version, and the binding model:
+// unqualified resources go to the material set, "$Globals" for GLSL's loose
+// uniforms, automatic bindings and locations (fixed up later, spirv_fixup.h).
+void configure(glslang::TShader& shader, ir::ProgramLanguage language, Stage stage, const std::string& entry,
+               const BackendOptions& options) {
+  EShLanguage lang = to_glslang(stage);
+  glslang::EShSource source = is_hlsl(language) ? glslang::EShSourceHlsl : glslang::EShSourceGlsl;
+  if (options.target == TargetEnv::opengl4_5) {
+    shader.setEnvInput(source, lang, glslang::EShClientOpenGL, 100);
+    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  } else {
+    bool v12 = options.target == TargetEnv::vulkan1_2;
+    shader.setEnvInput(source, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, v12 ? glslang::EShTargetVulkan_1_2 : glslang::EShTargetVulkan_1_1);
+    shader.setEnvTarget(glslang::EShTargetSpv, v12 ? glslang::EShTargetSpv_1_5 : glslang::EShTargetSpv_1_3);
+  }
+  if (is_hlsl(language)) {
+    shader.setEntryPoint(entry.c_str());
+    shader.setSourceEntryPoint(entry.c_str());
+    shader.setHlslIoMapping(true);
+    shader.setEnvTargetHlslFunctionality1();  // semantics as decorations; stripped after reflection
+  } else {
+    shader.setEnvInputVulkanRulesRelaxed();  // Unity-style loose uniforms in GLSLPROGRAM
+    shader.setGlobalUniformBlockName(kGlobalsBlock);
+    shader.setGlobalUniformSet(kMaterialSet);
+    shader.setGlobalUniformBinding(0);
+  }
+  shader.setAutoMapBindings(true);
+  shader.setAutoMapLocations(true);
+  shader.setResourceSetBinding({std::to_string(kMaterialSet)});
+  // Not setDebugInfo(): with #include, glslang 12 then emits DebugSource
+  // instructions of a non-semantic set it never imports (invalid SPIR-V).
+  // -g still gets OpString/OpLine from SpvOptions::generateDebugInfo.
+}
+
+int default_version(ir::ProgramLanguage language) { return is_hlsl(language) ? 100 : 450; }
+
+// Uniform resources in declaration order, from the AST's linker objects
+// (which keep unused ones, so every stage sees the same list).
+std::vector<DeclaredResource> declared_resources(const glslang::TIntermediate& intermediate) {
+  std::vector<DeclaredResource> out;
+  const TIntermNode* root = intermediate.getTreeRoot();
+  const glslang::TIntermAggregate* aggregate = root ? root->getAsAggregate() : nullptr;
+  if (!aggregate || aggregate->getSequence().empty()) return out;
+  const glslang::TIntermAggregate* linker = aggregate->getSequence().back()->getAsAggregate();
+  if (!linker || linker->getOp() != glslang::EOpLinkerObjects) return out;
+  for (const TIntermNode* node : linker->getSequence()) {
+    const glslang::TIntermSymbol* symbol = node->getAsSymbolNode();
+    if (!symbol) continue;
+    const glslang::TType& type = symbol->getType();
+    const glslang::TQualifier& q = type.getQualifier();
+    bool resource = q.storage == glslang::EvqUniform || q.storage == glslang::EvqBuffer;
+    if (!resource || q.isPushConstant() || type.getBasicType() == glslang::EbtVoid) continue;
+    bool block = type.getBasicType() == glslang::EbtBlock;
+    if (!block && type.getBasicType() != glslang::EbtSampler) continue;  // loose uniforms live in a block
+    DeclaredResource r;
+    r.key = block ? std::string(type.getTypeName().c_str()) : std::string(symbol->getName().c_str());
+    r.block = block;
+    r.has_set = q.hasSet();
+    r.has_binding = q.hasBinding();
+    r.set = r.has_set ? q.layoutSet : 0;
+    r.binding = r.has_binding ? q.layoutBinding : 0;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                          const std::string& entry, const BackendOptions& options, FileIncluder& includer) {
+  GlslangOutput out;
+  EShMessages messages = messages_for(language, options);
+  glslang::TShader shader(to_glslang(stage));
+  const char* text = source.text.c_str();
+  const int length = int(source.text.size());
+  const char* name = source.root_name.c_str();
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  configure(shader, language, stage, entry, options);
+  bool parsed = shader.parse(GetDefaultResources(), default_version(language), false, messages, includer);
+  out.parse_log = shader.getInfoLog();
+  if (!parsed) return out;
+  out.declared = declared_resources(*shader.getIntermediate());
+
+  // The program must die before the shader it links (glslang's rule).
+  auto program = std::make_unique<glslang::TProgram>();
+  program->addShader(&shader);
+  bool linked = program->link(messages) && program->mapIO();
+  out.link_log = program->getInfoLog();
+  if (!linked) return out;
+
+  glslang::SpvOptions spv_options;
+  spv_options.generateDebugInfo = options.debug_info;
+  // No spirv-opt inside glslang: HLSL is legalised in spirv_tools.cpp after
+  // the module has been validated, because glslang sometimes emits invalid
+  // SPIR-V that crashes the optimiser instead of failing.
+  spv_options.disableOptimizer = true;
+  spv_options.validate = false;
+  spv::SpvBuildLogger logger;
+  glslang::GlslangToSpv(*program->getIntermediate(to_glslang(stage)), out.spirv, &logger, &spv_options);
+  out.spirv_log = logger.getAllMessages();
+  out.ok = !out.spirv.empty();
+  return out;
+}
+
+GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                                 const BackendOptions& options, FileIncluder& includer) {
+  GlslangOutput out;
+  glslang::TShader shader(to_glslang(stage));
+  const char* text = source.text.c_str();
+  const int length = int(source.text.size());
+  const char* name = source.root_name.c_str();
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  configure(shader, language, stage, "main", options);
+  out.ok = shader.preprocess(GetDefaultResources(), default_version(language), ENoProfile, false, false,
+                             messages_for(language, options), &out.preprocessed, includer);
+  out.parse_log = shader.getInfoLog();
+  return out;
+}
+
+std::string glsl_errors(const std::string& text, Stage stage) {
+  EShLanguage language = to_glslang(stage);
+  glslang::TShader shader(language);
+  const char* source = text.c_str();
+  const int length = int(text.size());
+  shader.setStringsWithLengths(&source, &length, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientOpenGL, 100);
+  shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+  if (shader.parse(GetDefaultResources(), 100, false, EShMsgDefault)) return {};
+  std::string log = shader.getInfoLog();
+  return log.empty() ? std::string("rejected") : log;
+}
+
+}  // namespace facet::backend

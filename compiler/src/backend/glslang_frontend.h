@@ -1,0 +1,49 @@
+// Runs glslang on an assembled source: parse (HLSL with DX9 compatibility,
+// or GLSL), link, map bindings and locations, and generate SPIR-V. Nothing
+// here reports diagnostics; the logs are returned for info_log.h to map.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "backend/includer.h"
+#include "backend/source_assembly.h"
+#include "facet/backend.h"
+
+namespace facet::backend {
+
+// A uniform resource (texture, sampler, cbuffer, the "$Global" block) as
+// declared, in declaration order. `key` is the variable name, or the block's
+// type name for blocks (how the SPIR-V fix-ups find it again).
+struct DeclaredResource {
+  std::string key;
+  bool block = false;
+  bool has_set = false, has_binding = false;
+  uint32_t set = 0, binding = 0;
+};
+
+struct GlslangOutput {
+  bool ok = false;
+  std::string parse_log;  // info log of TShader::parse (or preprocess)
+  std::string link_log;   // info log of TProgram::link / mapIO
+  std::string spirv_log;  // messages of GlslangToSpv
+  std::vector<uint32_t> spirv;
+  std::vector<DeclaredResource> declared;  // stage-independent order
+  std::string preprocessed;                // preprocess_glslang only
+};
+
+// Compiles `source` for `stage` with entry point `entry` ("main" for GLSL).
+GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                          const std::string& entry, const BackendOptions& options, FileIncluder& includer);
+
+// Only the preprocessor; `preprocessed` holds the text when ok.
+GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                                 const BackendOptions& options, FileIncluder& includer);
+
+// glslang's complaints about a GLSL or ESSL text (as cross_compile makes for
+// OpenGL), parsed as GLSL for OpenGL; empty when it parses. For tests and
+// self-checks.
+std::string glsl_errors(const std::string& text, Stage stage);
+
+}  // namespace facet::backend

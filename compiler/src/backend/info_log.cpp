@@ -1,0 +1,336 @@
+#include "backend/info_log.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+
+namespace facet::backend {
+namespace {
+
+constexpr std::string_view kIncludeFailure = "Could not process include directive for header name:";
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Splits "'tok' : message" into token and message.
+void split_token(std::string_view body, LogMessage& m) {
+  body = trim(body);
+  if (body.size() >= 2 && body.front() == '\'') {
+    size_t close = body.find("' :", 1);
+    if (close != std::string_view::npos) {
+      m.token = std::string(body.substr(1, close - 1));
+      m.text = std::string(trim(body.substr(close + 3)));
+      return;
+    }
+  }
+  m.text = std::string(body);
+}
+
+bool is_noise(std::string_view rest) {
+  static const std::regex count_line(R"(^\d+ compilation errors?\..*)");
+  return std::regex_match(rest.begin(), rest.end(), count_line);
+}
+
+// Byte position of `token` in `line`, whole words only for identifiers.
+std::optional<size_t> find_token(std::string_view line, std::string_view token) {
+  if (token.empty()) return std::nullopt;
+  bool ident = std::all_of(token.begin(), token.end(), is_ident_char);
+  for (size_t pos = line.find(token); pos != std::string_view::npos; pos = line.find(token, pos + 1)) {
+    if (!ident) return pos;
+    bool left_ok = pos == 0 || !is_ident_char(line[pos - 1]);
+    size_t end = pos + token.size();
+    bool right_ok = end >= line.size() || !is_ident_char(line[end]);
+    if (left_ok && right_ok) return pos;
+  }
+  return std::nullopt;
+}
+
+std::string clean_types(std::string text) {
+  // glslang spells types of temporaries as "' temp 3-component vector of float'".
+  for (std::string_view noise : {"' temp ", "' const ", "' in ", "' uniform "}) {
+    for (size_t pos = text.find(noise); pos != std::string::npos; pos = text.find(noise, pos + 1)) {
+      text.replace(pos, noise.size(), "'");
+    }
+  }
+  return text;
+}
+
+std::string format_message(const LogMessage& m) {
+  if (m.text == "Expected") return fmt::format("expected '{}'", m.token);
+  std::string text = clean_types(m.text);
+  // Diagnostics start in lower case ("Could not ..." -> "could not ...").
+  if (text.size() > 1 && std::isupper(static_cast<unsigned char>(text[0])) &&
+      std::islower(static_cast<unsigned char>(text[1]))) {
+    text[0] = char(std::tolower(static_cast<unsigned char>(text[0])));
+  }
+  if (m.token.empty()) return text.empty() ? std::string("shader compilation failed") : text;
+  return fmt::format("'{}': {}", m.token, text);
+}
+
+bool is_entry_point_message(std::string_view text) {
+  return text.find("Missing entry point") != std::string_view::npos ||
+         text.find("Entry point not found") != std::string_view::npos;
+}
+
+class LogMapper {
+ public:
+  LogMapper(LogContext& context, Diagnostics& diags) : ctx_(context), diags_(diags) {}
+
+  void report(const LogMessage& m) {
+    if (is_entry_point_message(m.text)) return report_missing_entry();
+    FileId file = resolve_file(m.file);
+    SourceSpan span = file != kNoFile && m.line > 0 ? locate(file, m) : SourceSpan{};
+    if (m.text.starts_with(kIncludeFailure)) return report_missing_include(m, span, file);
+    std::string message = format_message(m);
+    if (file == kNoFile && !m.file.empty()) message = fmt::format("{}:{}: {}", m.file, m.line, message);
+    DiagId id = m.severity == Severity::error ? ctx_.error_id : DiagId::shader_compiler_warning;
+    Diagnostic& d = diags_.add(id, m.severity, span, std::move(message));
+    d.include_stack = include_stack(m.file);
+  }
+
+ private:
+  FileId resolve_file(const std::string& name) {
+    if (name.empty()) return kNoFile;
+    if (name == ctx_.source.root_name) return ctx_.shader_file;
+    if (name == kPreludeName) return prelude_file();
+    return ctx_.sources.find(name).value_or(kNoFile);
+  }
+
+  FileId prelude_file() {
+    if (prelude_ == kNoFile) prelude_ = ctx_.sources.add_file(kPreludeName, ctx_.source.prelude);
+    return prelude_;
+  }
+
+  SourceSpan locate(FileId file, const LogMessage& m) const {
+    std::string_view line = ctx_.sources.line_text(file, m.line);
+    uint32_t start = ctx_.sources.offset_of(file, m.line, 1);
+    std::string_view token = m.token;
+    if (m.text.starts_with(kIncludeFailure)) token = trim(std::string_view(m.text).substr(kIncludeFailure.size()));
+    if (m.text != "Expected") {
+      if (auto pos = find_token(line, token)) {
+        return {file, start + uint32_t(*pos), start + uint32_t(*pos + token.size())};
+      }
+    }
+    size_t col = m.column > 0 ? std::min<size_t>(m.column - 1, line.size()) : line.find_first_not_of(" \t");
+    if (col == std::string_view::npos) col = 0;
+    // glslang's parse-failure column is the last character of the token.
+    while (m.column > 0 && col > 0 && col < line.size() && is_ident_char(line[col]) && is_ident_char(line[col - 1])) {
+      --col;
+    }
+    return {file, start + uint32_t(col), start + uint32_t(col)};
+  }
+
+  void report_missing_include(const LogMessage& m, SourceSpan span, FileId file) {
+    std::string header(trim(std::string_view(m.text).substr(kIncludeFailure.size())));
+    if (span.has_location() && span.begin > 0 && file != kNoFile) {
+      const std::string& text = ctx_.sources.text(file);
+      // Widen the span over the quotes or angle brackets around the name.
+      if (span.end < text.size() && (text[span.begin - 1] == '"' || text[span.begin - 1] == '<')) {
+        span.begin -= 1;
+        span.end += 1;
+      }
+    }
+    if (ctx_.includer.too_nested(header)) {
+      Diagnostic& d = diags_.add(DiagId::backend_nesting_too_deep, span,
+                                 fmt::format("'{}' nests brackets more than {} deep", header, kMaxNesting));
+      d.include_stack = include_stack(m.file);
+      return;
+    }
+    if (ctx_.includer.too_deep(header)) {
+      Diagnostic& d = diags_.add(DiagId::backend_include_not_found, span,
+                                 fmt::format("#include nested more than {} deep", kMaxIncludeDepth));
+      d.note({}, fmt::format("does '{}' include itself without an include guard?", header));
+      d.include_stack = include_stack(m.file);
+      return;
+    }
+    Diagnostic& d = diags_.add(DiagId::backend_include_not_found, span, fmt::format("include file '{}' not found", header));
+    std::vector<std::string> dirs = ctx_.includer.search_dirs(m.file);
+    std::string list;
+    for (const std::string& dir : dirs) list += (list.empty() ? "" : ", ") + fmt::format("'{}'", dir);
+    d.note({}, list.empty() ? std::string("no include directories to search") : "searched " + list);
+    d.include_stack = include_stack(m.file);
+  }
+
+  void report_missing_entry() {
+    if (entry_reported_) return;
+    entry_reported_ = true;
+    const std::string& entry = ctx_.program.entry_points[size_t(ctx_.stage)];
+    diags_.add(DiagId::backend_compile_error, entry_pragma_span(ctx_.program, ctx_.stage),
+               fmt::format("{} entry point '{}' is not defined", stage_name(ctx_.stage), entry));
+  }
+
+  // Span of the `#include` line in `includer` that names `requested`.
+  SourceSpan include_directive(const std::string& includer, const std::string& requested) {
+    auto search = [&](FileId file, uint32_t begin, uint32_t end) -> std::optional<SourceSpan> {
+      const std::string& text = ctx_.sources.text(file);
+      end = std::min<uint32_t>(end, uint32_t(text.size()));
+      for (uint32_t pos = begin; pos < end;) {
+        size_t eol = text.find('\n', pos);
+        uint32_t line_end = eol == std::string::npos ? uint32_t(text.size()) : uint32_t(eol);
+        std::string_view line(text.data() + pos, line_end - pos);
+        size_t hash = line.find('#');
+        if (hash != std::string_view::npos && line.find("include", hash) != std::string_view::npos) {
+          if (auto at = find_token(line, requested)) {
+            return SourceSpan{file, pos + uint32_t(hash), pos + uint32_t(*at + requested.size() + 1)};
+          }
+        }
+        pos = line_end + 1;
+      }
+      return std::nullopt;
+    };
+    if (includer == ctx_.source.root_name) {
+      if (ctx_.shader_file != kNoFile) {
+        for (const ir::SourceChunk& chunk : ctx_.program.includes) {
+          if (auto s = search(ctx_.shader_file, chunk.span.begin, chunk.span.end)) return *s;
+        }
+        const SourceSpan& body = ctx_.program.body.span;
+        if (auto s = search(ctx_.shader_file, body.begin, body.end)) return *s;
+      }
+      FileId prelude = prelude_file();
+      return search(prelude, 0, UINT32_MAX).value_or(SourceSpan{prelude, 0, 0});
+    }
+    if (auto file = ctx_.sources.find(includer)) {
+      return search(*file, 0, UINT32_MAX).value_or(SourceSpan{*file, 0, 0});
+    }
+    return {};
+  }
+
+  // Innermost first: where the file was included, where that file was, ...
+  std::vector<SourceSpan> include_stack(const std::string& file) {
+    std::vector<SourceSpan> stack;
+    std::string current = file;
+    for (size_t depth = 0; depth < 64; ++depth) {
+      const auto& records = ctx_.includer.records();
+      auto it = std::find_if(records.begin(), records.end(), [&](const IncludeRecord& r) { return r.path == current; });
+      if (it == records.end()) break;
+      stack.push_back(include_directive(it->includer, it->requested));
+      if (it->includer == current) break;
+      current = it->includer;
+    }
+    return stack;
+  }
+
+  LogContext& ctx_;
+  Diagnostics& diags_;
+  FileId prelude_ = kNoFile;
+  bool entry_reported_ = false;
+};
+
+}  // namespace
+
+std::vector<LogMessage> parse_info_log(std::string_view log) {
+  static const std::regex located(R"(^(.*?):(\d+): (.*)$)");
+  static const std::regex parse_failed(R"(^(.*)\((\d+)\): error at column (\d+), (.*)$)");
+  static const std::vector<std::pair<std::string_view, Severity>> prefixes = {
+      {"ERROR: ", Severity::error},          {"WARNING: ", Severity::warning},
+      {"INTERNAL ERROR: ", Severity::error}, {"UNIMPLEMENTED: ", Severity::error},
+      {"NOTE: ", Severity::note}};
+  std::vector<LogMessage> out;
+  size_t pos = 0;
+  while (pos < log.size()) {
+    size_t eol = log.find('\n', pos);
+    if (eol == std::string_view::npos) eol = log.size();
+    std::string line(trim(log.substr(pos, eol - pos)));
+    pos = eol + 1;
+    if (line.empty()) continue;
+    std::smatch match;
+    auto prefix = std::find_if(prefixes.begin(), prefixes.end(), [&](const auto& p) { return line.starts_with(p.first); });
+    if (prefix == prefixes.end()) {
+      if (std::regex_match(line, match, parse_failed)) {
+        LogMessage m;
+        m.file = match[1];
+        m.line = uint32_t(std::stoul(match[2]));
+        m.column = uint32_t(std::stoul(match[3]));
+        m.text = match[4];
+        m.parse_failed_marker = true;
+        out.push_back(std::move(m));
+      } else if (!out.empty()) {
+        out.back().text += " " + line;  // a continuation line
+      }
+      continue;
+    }
+    std::string rest = line.substr(prefix->first.size());
+    if (is_noise(rest)) continue;
+    LogMessage m;
+    m.severity = prefix->second;
+    if (std::regex_match(rest, match, located) && match[2].length() < 9) {
+      m.file = match[1];
+      m.line = uint32_t(std::stoul(match[2]));
+      split_token(std::string(match[3]), m);
+    } else {
+      split_token(rest, m);
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+void report_info_log(std::string_view log, LogContext& context, Diagnostics& diags) {
+  std::vector<LogMessage> messages = parse_info_log(log);
+  auto same_place = [](const LogMessage& a, const LogMessage& b) { return a.file == b.file && a.line == b.line; };
+  // "error at column N, HLSL parsing failed" lends its column to the messages
+  // of its line and is dropped; alone, it becomes a syntax error.
+  for (const LogMessage& marker : messages) {
+    if (!marker.parse_failed_marker) continue;
+    for (LogMessage& m : messages) {
+      if (!m.parse_failed_marker && same_place(m, marker) && m.column == 0) m.column = marker.column;
+    }
+  }
+  size_t real_errors = std::count_if(messages.begin(), messages.end(), [](const LogMessage& m) {
+    return !m.parse_failed_marker && m.severity == Severity::error && m.text != "compilation terminated";
+  });
+  // glslang's HLSL parser stops at the first declaration it cannot finish;
+  // what it reports after that (stray '#' in the rest of an include, "syntax
+  // error" at the end) is noise. Keep the first error's line only.
+  bool parse_failed = std::any_of(messages.begin(), messages.end(), [](const LogMessage& m) {
+    return m.parse_failed_marker;
+  });
+  auto first_error = std::find_if(messages.begin(), messages.end(), [](const LogMessage& m) {
+    return !m.parse_failed_marker && m.severity == Severity::error && m.text != "compilation terminated";
+  });
+  LogMapper mapper(context, diags);
+  for (LogMessage& m : messages) {
+    bool cascade = parse_failed && first_error != messages.end() && m.severity == Severity::error &&
+                   !same_place(m, *first_error);
+    if (cascade) continue;
+    if (m.parse_failed_marker) {
+      bool covered = std::any_of(messages.begin(), messages.end(),
+                                 [&](const LogMessage& o) { return !o.parse_failed_marker && same_place(o, m); });
+      if (covered) continue;
+      m.text = "syntax error";
+    }
+    if (m.text == "compilation terminated" && real_errors > 0) continue;
+    // Follow-on complaints after the first error of a line: the parser's
+    // "expected ..." and messages without a token of their own.
+    bool follow_on = m.severity == Severity::error && (m.text == "Expected" || m.token.empty()) &&
+                     std::any_of(messages.begin(), messages.end(), [&](const LogMessage& o) {
+                       return &o < &m && !o.parse_failed_marker && o.severity == Severity::error &&
+                              same_place(o, m) && !m.file.empty();
+                     });
+    if (follow_on) continue;
+    mapper.report(m);
+  }
+}
+
+void add_included_files(const FileIncluder& includer, SourceMap& sources) {
+  for (const IncludeRecord& record : includer.records()) {
+    if (sources.find(record.path)) continue;
+    if (const std::string* text = includer.text_of(record.path)) sources.add_file(record.path, *text);
+  }
+}
+
+SourceSpan entry_pragma_span(const ir::Program& program, Stage stage) {
+  for (const ir::Pragma& pragma : program.pragmas) {
+    if (pragma.name == stage_name(stage)) return pragma.span;
+  }
+  return program.body.span;
+}
+
+}  // namespace facet::backend

@@ -1,0 +1,82 @@
+// File input and output for the driver: bounded reads, atomic writes.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "driver/files.h"
+#include "facet/compiler.h"
+
+namespace facet {
+namespace fs = std::filesystem;
+
+Result<std::string> read_text_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    diags.add(DiagId::io_cannot_read, {}, fmt::format("'{}' is a directory", path));
+    return failure("directory");
+  }
+  auto size = fs::file_size(path, ec);
+  if (ec) {
+    diags.add(DiagId::io_cannot_read, {}, fmt::format("cannot open '{}': {}", path, ec.message()));
+    return failure("cannot open");
+  }
+  if (size > max_bytes) {
+    diags.add(DiagId::io_too_large, {},
+              fmt::format("'{}' is {} bytes; the limit is {} bytes", path, size, max_bytes));
+    return failure("too large");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diags.add(DiagId::io_cannot_read, {}, fmt::format("cannot open '{}'", path));
+    return failure("cannot open");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags) {
+  fs::path target(path);
+  fs::path temp = target;
+  temp += fmt::format(".tmp{}", std::rand());
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
+      return failure("cannot write");
+    }
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.flush();
+    if (!out) {
+      out.close();
+      std::error_code ignore;
+      fs::remove(temp, ignore);
+      diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
+      return failure("cannot write");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
+    return failure("cannot write");
+  }
+  return {};
+}
+
+std::string default_stdlib_dir() {
+  if (const char* env = std::getenv("FACET_STDLIB_DIR"); env && *env) return env;
+  std::error_code ec;
+  if (fs::exists(fs::path(FACET_BUILD_STDLIB_DIR) / "UnityCG.cginc", ec)) return FACET_BUILD_STDLIB_DIR;
+  return FACET_INSTALL_STDLIB_DIR;
+}
+
+std::string version_string() { return fmt::format("facet {} (glslang 12, SPIRV-Tools, SPIRV-Cross)", FACET_VERSION); }
+
+}  // namespace facet

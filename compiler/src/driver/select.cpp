@@ -1,0 +1,121 @@
+// Which passes and variants a compile covers.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+#include "facet/compiler.h"
+
+namespace facet {
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+  return out;
+}
+
+std::optional<size_t> parse_index(const std::string& text) {
+  size_t value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+bool pass_requested(const ir::Pass& pass, size_t index, const std::vector<std::string>& requested) {
+  if (requested.empty()) return true;
+  for (const std::string& r : requested) {
+    if (auto i = parse_index(r); i && *i == index) return true;
+    if (!pass.name.empty() && upper(pass.name) == upper(r)) return true;
+  }
+  return false;
+}
+
+// "Shader/PASSNAME" naming a pass of this same shader; other shaders are not
+// searched (facet compiles one file at a time).
+const ir::Pass* resolve_use_pass(const ir::Shader& shader, const ir::Pass& use, Diagnostics& diags) {
+  auto slash = use.use_pass.rfind('/');
+  std::string shader_name = slash == std::string::npos ? "" : use.use_pass.substr(0, slash);
+  std::string pass_name = upper(slash == std::string::npos ? use.use_pass : use.use_pass.substr(slash + 1));
+  if (shader_name == shader.name) {
+    for (const ir::SubShader& sub : shader.subshaders) {
+      for (const ir::Pass& p : sub.passes) {
+        if (p.kind == ir::PassKind::normal && upper(p.name) == pass_name) return &p;
+      }
+    }
+  }
+  diags.add(DiagId::driver_usepass_unresolved, use.span,
+            fmt::format("UsePass '{}' is not resolved: facet only finds passes of the same shader file; the pass is "
+                        "skipped",
+                        use.use_pass));
+  return nullptr;
+}
+
+}  // namespace
+
+Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shader, const CompileOptions& options,
+                                                          Diagnostics& diags) const {
+  if (shader.subshaders.empty()) {
+    diags.add(DiagId::driver_no_program, shader.span, fmt::format("shader '{}' has no SubShader", shader.name));
+    return failure("no subshader");
+  }
+  // Every SubShader targets Vulkan-class hardware, so the first one is used.
+  const size_t sub_index = 0;
+  const ir::SubShader& sub = shader.subshaders[sub_index];
+  if (sub.surface_program) {
+    diags.add(DiagId::driver_surface_unsupported, sub.surface_program->body.span,
+              "surface shaders ('#pragma surface') are not supported by this version of facet yet");
+    return failure("surface shader");
+  }
+  std::vector<SelectedPass> selected;
+  bool failed = false;
+  for (size_t i = 0; i < sub.passes.size(); ++i) {
+    const ir::Pass& pass = sub.passes[i];
+    if (!pass_requested(pass, i, options.passes)) continue;
+    const ir::Pass* source = &pass;
+    if (pass.kind == ir::PassKind::grab_pass) {
+      diags.add(DiagId::driver_grabpass_skipped, pass.span, "GrabPass has no program; it is not compiled");
+      continue;
+    }
+    if (pass.kind == ir::PassKind::use_pass) {
+      source = resolve_use_pass(shader, pass, diags);
+      if (!source) continue;
+    }
+    if (!source->program) continue;
+    auto space = variants::build_keyword_space(*source->program, diags);
+    if (!space) {
+      failed = true;
+      continue;
+    }
+    selected.push_back({sub_index, i, source, std::move(*space)});
+  }
+  if (failed) return failure("bad keyword pragmas");
+  if (selected.empty() && !options.passes.empty()) {
+    std::string names;
+    for (size_t i = 0; i < sub.passes.size(); ++i) {
+      names += fmt::format("{}{} ('{}')", names.empty() ? "" : ", ", i, sub.passes[i].name);
+    }
+    diags.add(DiagId::driver_no_such_pass, {}, fmt::format("no pass matches '{}'", fmt::join(options.passes, " ")))
+        .note({}, fmt::format("the passes are: {}", names.empty() ? "none" : names));
+    return failure("no such pass");
+  }
+  return selected;
+}
+
+Result<std::vector<variants::VariantKey>> Compiler::select_variants(const SelectedPass& pass,
+                                                                    const CompileOptions& options,
+                                                                    Diagnostics& diags) const {
+  if (options.keywords) {
+    variants::SelectOptions select{.strict = options.strict_selection};
+    auto chosen = variants::select_variant(pass.keywords, *options.keywords, {}, select, diags);
+    FACET_TRY(chosen);
+    return std::vector<variants::VariantKey>{chosen->key};
+  }
+  variants::EnumerateOptions enumerate{.max_variants = options.max_variants_per_pass == 0
+                                                           ? UINT64_MAX
+                                                           : options.max_variants_per_pass};
+  return variants::enumerate(pass.keywords, enumerate, diags);
+}
+
+}  // namespace facet

@@ -1,0 +1,305 @@
+// package_to_json: a stable, readable view of a Package. Keys are in a fixed
+// order (ordered_json built in code order); unset optional render state is
+// omitted; SPIR-V blobs appear as word count + xxh64 of their little-endian
+// bytes. Floats print as the shortest text that reads back as the same float
+// (non-finite ones as "nan", "inf", "-inf"); a key choice of kOffChoice as "off".
+#include <xxhash.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "facet/package.h"
+
+namespace facet::package {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json number(float f) {
+  if (std::isnan(f)) return "nan";
+  if (std::isinf(f)) return f > 0 ? "inf" : "-inf";
+  // float -> shortest decimal -> double, so 0.1f prints as 0.1 rather than
+  // 0.10000000149011612.
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, f);
+  double d = f;
+  if (ec == std::errc()) std::from_chars(buf, end, d);
+  return d;
+}
+
+std::string_view property_type_name(ir::PropertyType t) {
+  switch (t) {
+    case ir::PropertyType::float_: return "Float";
+    case ir::PropertyType::int_: return "Int";
+    case ir::PropertyType::integer: return "Integer";
+    case ir::PropertyType::range: return "Range";
+    case ir::PropertyType::color: return "Color";
+    case ir::PropertyType::vector: return "Vector";
+    case ir::PropertyType::tex2d: return "2D";
+    case ir::PropertyType::tex3d: return "3D";
+    case ir::PropertyType::cube: return "Cube";
+    case ir::PropertyType::tex2d_array: return "2DArray";
+    case ir::PropertyType::cube_array: return "CubeArray";
+  }
+  return "unknown";
+}
+
+std::string_view directive_text(variants::KeywordDirective d) {
+  switch (d) {
+    case variants::KeywordDirective::multi_compile: return "multi_compile";
+    case variants::KeywordDirective::shader_feature: return "shader_feature";
+    case variants::KeywordDirective::dynamic_branch: return "dynamic_branch";
+  }
+  return "unknown";
+}
+
+std::string_view resource_kind_name(ResourceKind k) {
+  switch (k) {
+    case ResourceKind::combined_image_sampler: return "combined_image_sampler";
+    case ResourceKind::separate_image: return "separate_image";
+    case ResourceKind::separate_sampler: return "separate_sampler";
+    case ResourceKind::storage_image: return "storage_image";
+    case ResourceKind::storage_buffer: return "storage_buffer";
+    case ResourceKind::uniform_texel_buffer: return "uniform_texel_buffer";
+  }
+  return "unknown";
+}
+
+Json stage_mask(StageMask mask) {
+  Json out = Json::array();
+  for (int i = 0; i < kStageCount; ++i) {
+    if (mask & stage_bit(Stage(i))) out.push_back(stage_name(Stage(i)));
+  }
+  return out;
+}
+
+Json tags(const std::vector<ir::Tag>& tags) {
+  Json out = Json::array();
+  for (const ir::Tag& t : tags) out.push_back(Json::array({t.key, t.value}));
+  return out;
+}
+
+// A literal prints as its text, a property reference as {"property": name}.
+Json value(const ir::StateValue& v) {
+  if (v.is_property()) return Json{{"property", v.property}};
+  return v.literal;
+}
+
+void put(Json& out, const char* key, const std::optional<ir::StateValue>& v) {
+  if (v) out[key] = value(*v);
+}
+
+Json stencil(const ir::StencilState& s) {
+  Json out = Json::object();
+  put(out, "ref", s.ref);
+  put(out, "read_mask", s.read_mask);
+  put(out, "write_mask", s.write_mask);
+  put(out, "comp", s.comp);
+  put(out, "pass", s.pass);
+  put(out, "fail", s.fail);
+  put(out, "zfail", s.zfail);
+  put(out, "comp_back", s.comp_back);
+  put(out, "pass_back", s.pass_back);
+  put(out, "fail_back", s.fail_back);
+  put(out, "zfail_back", s.zfail_back);
+  put(out, "comp_front", s.comp_front);
+  put(out, "pass_front", s.pass_front);
+  put(out, "fail_front", s.fail_front);
+  put(out, "zfail_front", s.zfail_front);
+  return out;
+}
+
+Json render_targets(const ir::RenderState& s, Json out) {
+  if (!s.blend.empty()) {
+    Json& list = out["blend"] = Json::array();
+    for (const ir::BlendState& b : s.blend) {
+      Json j{{"target", b.render_target}, {"off", b.off}, {"src", value(b.src)}, {"dst", value(b.dst)}};
+      put(j, "src_alpha", b.src_alpha);
+      put(j, "dst_alpha", b.dst_alpha);
+      list.push_back(std::move(j));
+    }
+  }
+  if (!s.blend_op.empty()) {
+    Json& list = out["blend_op"] = Json::array();
+    for (const ir::BlendOpState& b : s.blend_op) {
+      Json j{{"target", b.render_target}, {"color_op", value(b.color_op)}};
+      put(j, "alpha_op", b.alpha_op);
+      list.push_back(std::move(j));
+    }
+  }
+  if (!s.color_mask.empty()) {
+    Json& list = out["color_mask"] = Json::array();
+    for (const ir::ColorMaskState& c : s.color_mask) {
+      list.push_back(Json{{"target", c.render_target}, {"mask", value(c.mask)}});
+    }
+  }
+  return out;
+}
+
+Json render_state(const ir::RenderState& s) {
+  Json out = Json::object();
+  put(out, "cull", s.cull);
+  put(out, "ztest", s.ztest);
+  put(out, "zwrite", s.zwrite);
+  put(out, "alpha_to_mask", s.alpha_to_mask);
+  put(out, "zclip", s.zclip);
+  put(out, "conservative", s.conservative);
+  put(out, "offset_factor", s.offset_factor);
+  put(out, "offset_units", s.offset_units);
+  out = render_targets(s, std::move(out));
+  if (s.stencil) out["stencil"] = stencil(*s.stencil);
+  return out;
+}
+
+Json property(const ir::Property& p) {
+  Json attributes = Json::array();
+  for (const ir::PropertyAttribute& a : p.attributes) attributes.push_back(Json{{"name", a.name}, {"args", a.args}});
+  Json defaults = Json::array();
+  for (float f : p.default_value) defaults.push_back(number(f));
+  return Json{{"name", p.name},
+              {"display_name", p.display_name},
+              {"type", property_type_name(p.type)},
+              {"attributes", std::move(attributes)},
+              {"range", Json::array({number(p.range_min), number(p.range_max)})},
+              {"default", std::move(defaults)},
+              {"default_texture", p.default_texture}};
+}
+
+Json keyword_space(const variants::KeywordSpace& space) {
+  Json sets = Json::array();
+  for (const variants::KeywordSet& s : space.sets) {
+    sets.push_back(Json{{"directive", directive_text(s.directive)},
+                        {"pragma", s.pragma},
+                        {"local", s.local},
+                        {"stages", stage_mask(s.stages)},
+                        {"keywords", s.keywords}});
+  }
+  return Json{{"sets", std::move(sets)},
+              {"dynamic_branch", space.dynamic_branch_keywords},
+              {"skip_variants", space.skip_variants}};
+}
+
+Json variables(const std::vector<StageVariable>& vars) {
+  Json out = Json::array();
+  for (const StageVariable& v : vars) {
+    out.push_back(Json{{"name", v.name},
+                       {"semantic", v.semantic},
+                       {"location", v.location},
+                       {"type", v.type},
+                       {"array_size", v.array_size}});
+  }
+  return out;
+}
+
+Json members(const std::vector<BlockMember>& list) {
+  Json out = Json::array();
+  for (const BlockMember& m : list) {
+    out.push_back(Json{{"name", m.name},
+                       {"type", m.type},
+                       {"offset", m.offset},
+                       {"size", m.size},
+                       {"array_dims", m.array_dims},
+                       {"array_stride", m.array_stride},
+                       {"matrix_stride", m.matrix_stride},
+                       {"row_major", m.row_major},
+                       {"members", members(m.members)}});
+  }
+  return out;
+}
+
+Json reflection(const StageReflection& r) {
+  Json blocks = Json::array();
+  for (const UniformBlock& b : r.uniform_blocks) {
+    blocks.push_back(Json{{"name", b.name},
+                          {"set", b.set},
+                          {"binding", b.binding},
+                          {"size", b.size},
+                          {"push_constant", b.push_constant},
+                          {"members", members(b.members)}});
+  }
+  Json resources = Json::array();
+  for (const ResourceBinding& res : r.resources) {
+    resources.push_back(Json{{"name", res.name},
+                             {"kind", resource_kind_name(res.kind)},
+                             {"dim", res.dim},
+                             {"arrayed", res.arrayed},
+                             {"set", res.set},
+                             {"binding", res.binding},
+                             {"array_size", res.array_size}});
+  }
+  Json specs = Json::array();
+  for (const SpecConstant& c : r.spec_constants) {
+    specs.push_back(Json{{"name", c.name}, {"id", c.id}, {"type", c.type}, {"default_value", c.default_value}});
+  }
+  Json bindings = Json::array();
+  for (const PropertyBinding& b : r.property_bindings) {
+    bindings.push_back(Json{{"property", b.property}, {"role", b.role}, {"block", b.block}, {"member", b.member}});
+  }
+  return Json{{"stage", stage_name(r.stage)},         {"entry_point", r.entry_point},
+              {"inputs", variables(r.inputs)},       {"outputs", variables(r.outputs)},
+              {"uniform_blocks", std::move(blocks)}, {"resources", std::move(resources)},
+              {"spec_constants", std::move(specs)},  {"property_bindings", std::move(bindings)}};
+}
+
+Json variant(const PackageVariant& v) {
+  Json stages = Json::array();
+  for (const PackageStage& s : v.stages) {
+    stages.push_back(Json{{"stage", stage_name(s.stage)}, {"blob", s.blob}, {"reflection", reflection(s.reflection)}});
+  }
+  Json key = Json::array();
+  for (uint32_t c : v.key.choice) {
+    if (c == variants::kOffChoice) {
+      key.push_back("off");
+    } else {
+      key.push_back(c);
+    }
+  }
+  return Json{{"key", std::move(key)}, {"keywords", v.keywords}, {"stages", std::move(stages)}};
+}
+
+Json pass(const PackagePass& p) {
+  Json list = Json::array();
+  for (const PackageVariant& v : p.variants) list.push_back(variant(v));
+  return Json{{"name", p.name},
+              {"tags", tags(p.tags)},
+              {"state", render_state(p.state)},
+              {"keywords", keyword_space(p.keywords)},
+              {"variants", std::move(list)}};
+}
+
+Json blob(const std::vector<uint32_t>& words) {
+  std::vector<uint8_t> bytes;
+  bytes.reserve(words.size() * 4);
+  for (uint32_t w : words) {
+    for (int i = 0; i < 4; ++i) bytes.push_back(uint8_t(w >> (8 * i)));
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(XXH64(bytes.data(), bytes.size(), 0)));
+  return Json{{"words", words.size()}, {"xxh64", hex}};
+}
+
+}  // namespace
+
+std::string package_to_json(const Package& package) {
+  Json props = Json::array();
+  for (const ir::Property& p : package.properties) props.push_back(property(p));
+  Json passes = Json::array();
+  for (const PackagePass& p : package.passes) passes.push_back(pass(p));
+  Json blobs = Json::array();
+  for (const std::vector<uint32_t>& b : package.spirv_blobs) blobs.push_back(blob(b));
+  Json out{{"format_version", package.version},
+           {"shader", Json{{"name", package.shader_name},
+                           {"lod", package.lod},
+                           {"fallback", package.fallback},
+                           {"custom_editor", package.custom_editor},
+                           {"tags", tags(package.subshader_tags)}}},
+           {"properties", std::move(props)},
+           {"passes", std::move(passes)},
+           {"spirv_blobs", std::move(blobs)}};
+  // Invalid UTF-8 in a string is replaced, never thrown on.
+  return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace facet::package

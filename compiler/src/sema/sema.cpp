@@ -1,0 +1,148 @@
+// sema::analyze: properties, then Category scopes (outer to inner), then
+// each SubShader with its passes. Render state, tags and include blocks flow
+// inward: Category -> SubShader -> Pass, the inner scope winning.
+#include "facet/sema.h"
+
+#include "sema/lower.h"
+
+namespace facet::sema {
+namespace {
+
+// What an enclosing scope hands to the scopes inside it.
+struct Scope {
+  ir::RenderState state;
+  std::vector<ir::Tag> tags;
+  std::vector<const ast::ProgramBlock*> includes;  // Shader scope first
+};
+
+std::vector<const ast::ProgramBlock*> with_includes(std::vector<const ast::ProgramBlock*> outer,
+                                                    const std::vector<ast::ProgramBlock>& inner) {
+  for (const ast::ProgramBlock& b : inner) outer.push_back(&b);
+  return outer;
+}
+
+// Categories are stored parents-first, so one pass in index order resolves
+// each one's inherited scope.
+std::vector<Scope> lower_categories(const ast::Shader& shader, const Scope& root, Context& ctx) {
+  std::vector<Scope> out(shader.categories.size());
+  for (size_t i = 0; i < shader.categories.size(); ++i) {
+    const ast::Category& c = shader.categories[i];
+    const Scope& base = (c.parent >= 0 && size_t(c.parent) < i) ? out[size_t(c.parent)] : root;
+    check_tags(c.tags, ctx);
+    out[i].state = merge_state(base.state, lower_state(c.state, ctx));
+    out[i].tags = inherit_tags(base.tags, lower_tags(c.tags));
+    out[i].includes = with_includes(base.includes, c.includes);
+  }
+  return out;
+}
+
+const ir::Pragma* find_pragma(const ir::Program& program, std::string_view name) {
+  for (const ir::Pragma& p : program.pragmas) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+ir::Pass lower_normal_pass(const ast::Pass& p, const ir::SubShader& sub,
+                           const std::vector<const ast::ProgramBlock*>& includes, Context& ctx) {
+  ir::Pass out;
+  check_tags(p.tags, ctx);
+  out.tags = lower_tags(p.tags);
+  out.state = merge_state(sub.state, lower_state(p.state, ctx));
+  if (!p.program) return out;
+  out.program = lower_program(*p.program, includes, ctx);
+  if (const ir::Pragma* surface = find_pragma(*out.program, "surface")) {
+    ctx.error(DiagId::sema_surface_in_pass, surface->span, "a surface shader cannot be inside a Pass")
+        .note(p.span, "move the program block out of this Pass, directly into the SubShader");
+    out.program->surface_function.clear();
+  }
+  return out;
+}
+
+ir::Pass lower_pass(const ast::Pass& p, const ir::SubShader& sub, const std::vector<const ast::ProgramBlock*>& includes,
+                    Context& ctx) {
+  ir::Pass out;
+  switch (p.kind) {
+    case ast::PassKind::normal: out = lower_normal_pass(p, sub, includes, ctx); break;
+    case ast::PassKind::use_pass: {
+      out.kind = ir::PassKind::use_pass;
+      out.use_pass = p.use_pass;
+      size_t slash = p.use_pass.rfind('/');
+      if (slash == std::string::npos || slash == 0 || slash + 1 == p.use_pass.size()) {
+        ctx.error(DiagId::sema_bad_use_pass, p.span, "expected \"Shader/PASSNAME\" after 'UsePass', not \"" + p.use_pass + "\"");
+      } else {
+        out.name = p.use_pass.substr(slash + 1);
+      }
+      break;
+    }
+    case ast::PassKind::grab_pass:
+      out.kind = ir::PassKind::grab_pass;
+      out.grab_texture = p.grab_texture;
+      out.tags = lower_tags(p.tags);
+      break;
+  }
+  if (p.kind != ast::PassKind::use_pass) out.name = p.name;
+  out.span = p.span;
+  return out;
+}
+
+// Program blocks directly in a SubShader are surface shaders; there is at
+// most one.
+void lower_surface_program(const ast::SubShader& sub, const std::vector<const ast::ProgramBlock*>& includes,
+                           ir::SubShader& out, Context& ctx) {
+  for (size_t i = 0; i < sub.programs.size(); ++i) {
+    const ast::ProgramBlock& block = sub.programs[i];
+    if (i > 0) {
+      ctx.error(DiagId::sema_multiple_surface_programs, block.keyword_span,
+                "a SubShader holds at most one surface program")
+          .note(sub.programs[0].keyword_span, "the first one is here");
+      continue;
+    }
+    ir::Program program = lower_program(block, includes, ctx);
+    if (!program.is_surface()) {
+      ctx.error(DiagId::sema_program_outside_pass, block.keyword_span,
+                "a program block outside a Pass must be a surface shader")
+          .note({}, "add '#pragma surface surf Lambert' (or your functions), or put the program in a Pass");
+    }
+    out.surface_program = std::move(program);
+  }
+}
+
+ir::SubShader lower_subshader(const ast::SubShader& sub, const Scope& scope, Context& ctx) {
+  ir::SubShader out;
+  check_tags(sub.tags, ctx);
+  out.tags = inherit_tags(scope.tags, lower_tags(sub.tags));
+  out.lod = sub.lod.value_or(0);
+  out.state = merge_state(scope.state, lower_state(sub.state, ctx));
+  out.span = sub.span;
+  auto includes = with_includes(scope.includes, sub.includes);
+  lower_surface_program(sub, includes, out, ctx);
+  for (const ast::Pass& p : sub.passes) out.passes.push_back(lower_pass(p, out, includes, ctx));
+  propagate_lightmode(sub, out.tags, out.passes, ctx);
+  return out;
+}
+
+}  // namespace
+
+Result<ir::Shader> analyze(const ast::Shader& shader, const SourceMap& sources, const SemaOptions& options,
+                           Diagnostics& diags) {
+  Context ctx{sources, options, diags};
+  ir::Shader out;
+  out.name = shader.name;
+  out.file = shader.file;
+  out.span = shader.span;
+  out.custom_editor = shader.custom_editor;
+  if (shader.fallback && !shader.fallback_off && !iequals(*shader.fallback, "Off")) out.fallback = shader.fallback;
+  out.properties = lower_properties(shader.properties, ctx);
+  Scope root;
+  root.includes = with_includes({}, shader.includes);
+  std::vector<Scope> categories = lower_categories(shader, root, ctx);
+  for (const ast::SubShader& sub : shader.subshaders) {
+    bool in_category = sub.category >= 0 && size_t(sub.category) < categories.size();
+    out.subshaders.push_back(lower_subshader(sub, in_category ? categories[size_t(sub.category)] : root, ctx));
+  }
+  if (ctx.errors > 0) return failure(std::to_string(ctx.errors) + " error(s) in '" + shader.name + "'");
+  return out;
+}
+
+}  // namespace facet::sema

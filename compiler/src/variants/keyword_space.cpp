@@ -1,0 +1,340 @@
+// build_keyword_space: the keyword pragmas of one program, read with Unity's
+// rules (SPEC.md §3, docs/variants.md). Every bad pragma is reported before
+// the build fails, so one run shows all of them.
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string_view>
+#include <utility>
+
+#include "facet/variants.h"
+#include "variants/shortcuts.h"
+
+namespace facet::variants {
+namespace {
+
+constexpr std::array<std::pair<std::string_view, KeywordDirective>, 3> kBases = {{
+    {"multi_compile", KeywordDirective::multi_compile},
+    {"shader_feature", KeywordDirective::shader_feature},
+    {"dynamic_branch", KeywordDirective::dynamic_branch},
+}};
+
+constexpr std::array<std::pair<std::string_view, Stage>, 5> kStageSuffixes = {{
+    {"_vertex", Stage::vertex},
+    {"_fragment", Stage::fragment},
+    {"_geometry", Stage::geometry},
+    {"_hull", Stage::hull},
+    {"_domain", Stage::domain},
+}};
+
+struct DirectiveForm {
+  KeywordDirective directive = KeywordDirective::multi_compile;
+  bool local = false;
+  StageMask stages = kAllStages;
+};
+
+// The base a pragma name belongs to: the name is the base itself or the base
+// followed by '_'. Other pragmas (vertex, target, ...) are not ours.
+std::optional<std::pair<std::string_view, KeywordDirective>> keyword_family(std::string_view name) {
+  for (const auto& base : kBases) {
+    if (name == base.first) return base;
+    if (name.size() > base.first.size() && name.starts_with(base.first) && name[base.first.size()] == '_') {
+      return base;
+    }
+  }
+  return std::nullopt;
+}
+
+// base[_local][_stage] -> the form; nullopt for anything else (shortcuts, typos).
+std::optional<DirectiveForm> parse_directive(std::string_view name) {
+  auto family = keyword_family(name);
+  if (!family) return std::nullopt;
+  DirectiveForm form;
+  form.directive = family->second;
+  std::string_view rest = name.substr(family->first.size());
+  if (rest.starts_with("_local")) {
+    form.local = true;
+    rest.remove_prefix(6);
+  }
+  if (rest.empty()) return form;
+  for (const auto& [suffix, stage] : kStageSuffixes) {
+    if (rest == suffix) {
+      form.stages = stage_bit(stage);
+      return form;
+    }
+  }
+  return std::nullopt;
+}
+
+// Every spelling parse_directive accepts, for "did you mean" suggestions.
+std::vector<std::string> all_directive_spellings() {
+  std::vector<std::string> names;
+  for (const auto& base : kBases) {
+    for (std::string_view local : {"", "_local"}) {
+      std::string stem = std::string(base.first) + std::string(local);
+      names.push_back(stem);
+      for (const auto& suffix : kStageSuffixes) names.push_back(stem + std::string(suffix.first));
+    }
+  }
+  return names;
+}
+
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    }
+  }
+  return row[b.size()];
+}
+
+// The closest candidate within two edits, for a "did you mean" note.
+std::optional<std::string> suggest(std::string_view name, const std::vector<std::string>& candidates) {
+  std::optional<std::string> best;
+  size_t best_distance = 3;
+  for (const std::string& candidate : candidates) {
+    size_t distance = edit_distance(name, candidate);
+    if (distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+bool is_all_underscores(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c == '_'; });
+}
+
+// Keywords become #defines, so they must be identifiers.
+bool is_identifier(std::string_view s) {
+  auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (s.empty() || !alpha(s[0])) return false;
+  return std::all_of(s.begin(), s.end(), [&](char c) { return alpha(c) || digit(c); });
+}
+
+// The pragma's arguments up to a trailing "//" comment, which a parser that
+// keeps comments in pragma lines would otherwise hand us as keywords.
+std::vector<std::string_view> pragma_args(const ir::Pragma& pragma) {
+  std::vector<std::string_view> args;
+  for (const std::string& arg : pragma.args) {
+    if (std::string_view(arg).starts_with("//")) break;
+    args.push_back(arg);
+  }
+  return args;
+}
+
+std::string join(const std::vector<std::string>& items, std::string_view separator) {
+  std::string text;
+  for (const std::string& item : items) {
+    if (!text.empty()) text += separator;
+    text += item;
+  }
+  return text;
+}
+
+class SpaceBuilder {
+ public:
+  explicit SpaceBuilder(Diagnostics& diags) : diags_(diags) {}
+
+  void add(const ir::Pragma& pragma);
+  KeywordSpace finish();
+
+ private:
+  struct Declaration {
+    SourceSpan span;
+    bool dynamic = false;
+  };
+
+  void add_keyword_pragma(const ir::Pragma& pragma, const DirectiveForm& form);
+  void add_shortcut(const ir::Pragma& pragma);
+  void add_skip_variants(const ir::Pragma& pragma);
+  void report_unknown_directive(const ir::Pragma& pragma);
+  std::optional<std::vector<std::string>> read_keywords(const ir::Pragma& pragma);
+  bool claim(const std::string& keyword, SourceSpan span, bool dynamic);
+  void add_set(KeywordSet set);
+
+  Diagnostics& diags_;
+  KeywordSpace space_;
+  std::map<std::string, Declaration> declared_;  // keyword -> its first pragma
+  std::map<std::string, SourceSpan> skip_spans_;  // skip_variants keyword -> its pragma
+};
+
+void SpaceBuilder::add(const ir::Pragma& pragma) {
+  if (pragma.name == "skip_variants") return add_skip_variants(pragma);
+  if (!keyword_family(pragma.name)) return;  // not a keyword pragma
+  if (auto form = parse_directive(pragma.name)) return add_keyword_pragma(pragma, *form);
+  // Not base[_local][_stage]: a shortcut, or a typo of one or of a suffix.
+  if (pragma.name.starts_with("multi_compile_")) return add_shortcut(pragma);
+  report_unknown_directive(pragma);
+}
+
+// Validates names, maps all-underscore names to "" and drops repeats with a
+// warning. nullopt (after an error) when the pragma cannot form a set.
+std::optional<std::vector<std::string>> SpaceBuilder::read_keywords(const ir::Pragma& pragma) {
+  std::vector<std::string> keywords;
+  bool ok = true;
+  for (std::string_view arg : pragma_args(pragma)) {
+    std::string keyword = is_all_underscores(arg) ? std::string() : std::string(arg);
+    if (!keyword.empty() && !is_identifier(keyword)) {
+      diags_.add(DiagId::pragma_bad_keyword_set, pragma.span,
+                 "invalid keyword name '" + keyword + "' in '#pragma " + pragma.name +
+                     "'; a keyword is an identifier of letters, digits and '_'");
+      ok = false;
+      continue;
+    }
+    if (std::find(keywords.begin(), keywords.end(), keyword) != keywords.end()) {
+      std::string what =
+          keyword.empty() ? "more than one '_' (no keyword) entry" : "duplicate keyword '" + keyword + "'";
+      diags_.add(DiagId::pragma_duplicate_keyword, pragma.span,
+                 what + " in '#pragma " + pragma.name + "'; the repeat is ignored");
+      continue;
+    }
+    keywords.push_back(std::move(keyword));
+  }
+  if (!ok) return std::nullopt;
+  if (keywords.empty()) {
+    diags_.add(DiagId::pragma_bad_keyword_set, pragma.span, "'#pragma " + pragma.name + "' declares no keywords");
+    return std::nullopt;
+  }
+  return keywords;
+}
+
+void SpaceBuilder::add_keyword_pragma(const ir::Pragma& pragma, const DirectiveForm& form) {
+  auto keywords = read_keywords(pragma);
+  if (!keywords) return;
+  bool only_off = std::all_of(keywords->begin(), keywords->end(), [](const std::string& k) { return k.empty(); });
+  if (only_off) {
+    diags_.add(DiagId::pragma_empty_keyword_set, pragma.span,
+               "'#pragma " + pragma.name + "' lists only '_' (no keyword) and adds no variants");
+    return;
+  }
+  if (form.directive == KeywordDirective::dynamic_branch) {
+    for (const std::string& keyword : *keywords) {
+      if (!keyword.empty() && claim(keyword, pragma.span, true)) space_.dynamic_branch_keywords.push_back(keyword);
+    }
+    return;
+  }
+  // "shader_feature A" means "shader_feature _ A"; a lone multi_compile
+  // keyword stays always on.
+  if (form.directive == KeywordDirective::shader_feature && keywords->size() == 1) {
+    keywords->insert(keywords->begin(), std::string());
+  }
+  add_set(KeywordSet{form.directive, form.local, form.stages, std::move(*keywords), pragma.name, pragma.span});
+}
+
+void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
+  auto sets = expand_shortcut(pragma.name);
+  if (!sets) {
+    Diagnostic& d = diags_.add(DiagId::pragma_unknown_shortcut, pragma.span,
+                               "unknown keyword shortcut '" + pragma.name + "'; the known shortcuts are " +
+                                   join(known_shortcuts(), ", "));
+    std::vector<std::string> candidates = known_shortcuts();
+    for (std::string& spelling : all_directive_spellings()) candidates.push_back(std::move(spelling));
+    if (auto guess = suggest(pragma.name, candidates)) d.note({}, "did you mean '" + *guess + "'?");
+    return;
+  }
+  std::vector<std::string> removed;
+  for (std::string_view arg : pragma_args(pragma)) {
+    if (auto removes = modifier_removals(arg)) {
+      removed.insert(removed.end(), removes->begin(), removes->end());
+      continue;
+    }
+    diags_.add(DiagId::pragma_unknown_shortcut_modifier, pragma.span,
+               "unknown modifier '" + std::string(arg) + "' for '" + pragma.name +
+                   "' is ignored; known modifiers are " + join(known_modifiers(), ", "));
+  }
+  for (std::vector<std::string>& keywords : *sets) {
+    std::erase_if(keywords, [&](const std::string& k) {
+      return std::find(removed.begin(), removed.end(), k) != removed.end();
+    });
+    // A set that a modifier emptied (or left with only "_") adds no variants.
+    bool any = std::any_of(keywords.begin(), keywords.end(), [](const std::string& k) { return !k.empty(); });
+    if (!any) continue;
+    add_set(KeywordSet{KeywordDirective::multi_compile, false, kAllStages, std::move(keywords), pragma.name,
+                       pragma.span});
+  }
+}
+
+void SpaceBuilder::add_skip_variants(const ir::Pragma& pragma) {
+  auto keywords = read_keywords(pragma);
+  if (!keywords) return;
+  for (const std::string& keyword : *keywords) {
+    if (keyword.empty() || skip_spans_.count(keyword)) continue;  // "_" names no keyword
+    skip_spans_.emplace(keyword, pragma.span);
+    space_.skip_variants.push_back(keyword);
+  }
+}
+
+void SpaceBuilder::report_unknown_directive(const ir::Pragma& pragma) {
+  Diagnostic& d = diags_.add(DiagId::pragma_unknown_keyword_directive, pragma.span,
+                             "unknown keyword pragma '" + pragma.name +
+                                 "'; the forms are multi_compile, shader_feature and dynamic_branch, "
+                                 "each with an optional '_local' and one of the stage suffixes "
+                                 "'_vertex', '_fragment', '_geometry', '_hull', '_domain'");
+  if (auto guess = suggest(pragma.name, all_directive_spellings())) d.note({}, "did you mean '" + *guess + "'?");
+}
+
+// Records the first declaration of `keyword`; a second one is an error with
+// a note at the first, and the caller drops the keyword.
+bool SpaceBuilder::claim(const std::string& keyword, SourceSpan span, bool dynamic) {
+  auto [it, inserted] = declared_.emplace(keyword, Declaration{span, dynamic});
+  if (inserted) return true;
+  SourceSpan first = it->second.span;
+  diags_.add(DiagId::pragma_keyword_in_two_sets, span,
+             "keyword '" + keyword + "' is already declared by another keyword pragma; a keyword belongs to one set")
+      .note(first, "'" + keyword + "' was first declared here");
+  return false;
+}
+
+void SpaceBuilder::add_set(KeywordSet set) {
+  std::erase_if(set.keywords, [&](const std::string& k) { return !k.empty() && !claim(k, set.span, false); });
+  bool any = std::any_of(set.keywords.begin(), set.keywords.end(), [](const std::string& k) { return !k.empty(); });
+  if (any) space_.sets.push_back(std::move(set));
+}
+
+KeywordSpace SpaceBuilder::finish() {
+  // Checked at the end: skip_variants may come before the declaration.
+  for (const std::string& keyword : space_.skip_variants) {
+    auto it = declared_.find(keyword);
+    SourceSpan span = skip_spans_.at(keyword);
+    if (it == declared_.end()) {
+      diags_.add(DiagId::pragma_unused_skip_variant, span,
+                 "skip_variants keyword '" + keyword + "' is not declared by any keyword pragma of this program");
+    } else if (it->second.dynamic) {
+      diags_.add(DiagId::pragma_unused_skip_variant, span,
+                 "skip_variants keyword '" + keyword + "' is a dynamic_branch keyword, which has no variants to skip")
+          .note(it->second.span, "'" + keyword + "' is declared here");
+    }
+  }
+  return std::move(space_);
+}
+
+}  // namespace
+
+Result<KeywordSpace> build_keyword_space(const ir::Program& program, Diagnostics& diags) {
+  size_t errors_before = diags.error_count();
+  SpaceBuilder builder(diags);
+  for (const ir::Pragma& pragma : program.pragmas) builder.add(pragma);
+  KeywordSpace space = builder.finish();
+  if (diags.error_count() > errors_before) return failure("invalid keyword pragmas");
+  return space;
+}
+
+std::string_view directive_name(KeywordDirective directive) {
+  switch (directive) {
+    case KeywordDirective::multi_compile: return "multi_compile";
+    case KeywordDirective::shader_feature: return "shader_feature";
+    case KeywordDirective::dynamic_branch: return "dynamic_branch";
+  }
+  return "?";
+}
+
+}  // namespace facet::variants

@@ -1,0 +1,45 @@
+// Light attenuation and shadow macros for ForwardBase/ForwardAdd
+// vertex/fragment programs. Shadows are not implemented yet: the shadow
+// macros declare nothing and SHADOW_ATTENUATION is 1 for every SHADOWS_*
+// keyword. Attenuation follows POINT/SPOT/DIRECTIONAL (FacetLight.hlsl).
+#ifndef AUTOLIGHT_INCLUDED
+#define AUTOLIGHT_INCLUDED
+
+#include "HLSLSupport.cginc"
+#include "UnityShaderVariables.cginc"
+#include "FacetLight.hlsl"
+
+#define UNITY_ATTEN_CHANNEL r
+
+// ---- shadows (not implemented: fully lit) ------------------------------------
+#define SHADOW_COORDS(idx1)
+#define UNITY_SHADOW_COORDS(idx1)
+#define TRANSFER_SHADOW(a)
+#define UNITY_TRANSFER_SHADOW(a, coord)
+#define SHADOW_ATTENUATION(a) 1.0
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
+
+// ---- light coordinates ----------------------------------------------------------
+// LIGHTING_COORDS(idx1, idx2) adds the interpolators (light space position in
+// TEXCOORD<idx1>, shadow coordinates in TEXCOORD<idx2>); TRANSFER_VERTEX_TO_FRAGMENT(o)
+// fills them from `v.vertex` (so the vertex input must be called v, as in Unity).
+#if defined(POINT) || defined(POINT_COOKIE) || defined(SPOT)
+#define DECLARE_LIGHT_COORDS(idx) float3 _LightCoord : TEXCOORD##idx;
+#define COMPUTE_LIGHT_COORDS(a) a._LightCoord = FacetLightCoord(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz);
+#define LIGHT_ATTENUATION(a) (FacetLightAttenuationAt(a._LightCoord) * SHADOW_ATTENUATION(a))
+#else
+#define DECLARE_LIGHT_COORDS(idx)
+#define COMPUTE_LIGHT_COORDS(a)
+#define LIGHT_ATTENUATION(a) SHADOW_ATTENUATION(a)
+#endif
+
+#define LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) SHADOW_COORDS(idx2)
+#define UNITY_LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) UNITY_SHADOW_COORDS(idx2)
+#define TRANSFER_VERTEX_TO_FRAGMENT(a) COMPUTE_LIGHT_COORDS(a) TRANSFER_SHADOW(a)
+#define UNITY_TRANSFER_LIGHTING(a, coord) COMPUTE_LIGHT_COORDS(a) UNITY_TRANSFER_SHADOW(a, coord)
+
+// Attenuation at a world position times shadowing, computed in the fragment stage.
+#define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) \
+    float destName = FacetLightAttenuation(worldPos) * SHADOW_ATTENUATION(input)
+
+#endif // AUTOLIGHT_INCLUDED

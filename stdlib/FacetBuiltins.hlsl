@@ -1,0 +1,73 @@
+// facet's built-in uniforms: the binding ABI between shaders and the runtime.
+// Every declaration has an explicit register(x, spaceN); see
+// docs/binding-model.md for the sets and docs/stdlib.md for what each value
+// means and who fills it. Member names are Unity's, so Unity code reads them
+// directly; the Unity*.cginc files only add macros and functions.
+#ifndef FACET_BUILTINS_INCLUDED
+#define FACET_BUILTINS_INCLUDED
+
+// ---- set 0: per frame / camera ---------------------------------------------
+cbuffer FacetPerFrame : register(b0, space0)
+{
+    float4x4 unity_MatrixV;             // world -> view (right-handed, looks down -Z)
+    float4x4 unity_MatrixInvV;          // view -> world
+    float4x4 unity_MatrixP;             // view -> clip (Vulkan clip space, depth 0..1)
+    float4x4 unity_MatrixVP;            // world -> clip = P * V
+    float4x4 unity_CameraProjection;    // the camera's projection
+    float4x4 unity_CameraInvProjection;
+    float4x4 unity_WorldToCamera;       // world -> camera (left-handed, looks down +Z)
+    float4x4 unity_CameraToWorld;
+    float3 _WorldSpaceCameraPos;        // camera position, world space
+    float4 _ProjectionParams;           // x = 1 (-1 if flipped), y = near, z = far, w = 1/far
+    float4 _ScreenParams;               // x = width, y = height, z = 1 + 1/width, w = 1 + 1/height
+    float4 _ZBufferParams;              // x = 1 - far/near, y = far/near, z = x/far, w = y/far
+    float4 unity_OrthoParams;           // x = ortho width, y = ortho height, w = 1 orthographic, 0 perspective
+    float4 _Time;                       // t/20, t, 2t, 3t (seconds)
+    float4 _SinTime;                    // sin(t/8), sin(t/4), sin(t/2), sin(t)
+    float4 _CosTime;                    // cos(t/8), cos(t/4), cos(t/2), cos(t)
+    float4 unity_DeltaTime;             // dt, 1/dt, smoothed dt, 1/smoothed dt
+    float4 unity_FogColor;
+    float4 unity_FogParams;             // x = density/sqrt(ln 2), y = density/ln 2, z = -1/(end-start), w = end/(end-start)
+    float4 unity_AmbientSky;
+    float4 unity_AmbientEquator;
+    float4 unity_AmbientGround;
+    float4 glstate_lightmodel_ambient;  // flat ambient colour (UNITY_LIGHTMODEL_AMBIENT)
+    float4 unity_SHAr;                  // L2 spherical harmonics of the environment's
+    float4 unity_SHAg;                  // irradiance, packed as in Sloan's
+    float4 unity_SHAb;                  // "Stupid SH tricks" (see ShadeSH9)
+    float4 unity_SHBr;
+    float4 unity_SHBg;
+    float4 unity_SHBb;
+    float4 unity_SHC;
+    float4 unity_SpecCube0_HDR;         // DecodeHDR instructions of unity_SpecCube0
+    float4 unity_SpecCube0_BoxMax;
+    float4 unity_SpecCube0_BoxMin;
+    float4 unity_SpecCube0_ProbePosition;
+};
+samplerCUBE unity_SpecCube0 : register(s1, space0);       // prefiltered environment radiance
+sampler2D _CameraDepthTexture : register(s2, space0);     // raw depth of the camera, .r
+
+// ---- set 1: the light of the pass ------------------------------------------
+cbuffer FacetPerLight : register(b0, space1)
+{
+    float4 _WorldSpaceLightPos0;        // directional: (direction towards the light, 0); else (position, 1)
+    float4 _FacetLightColor0;           // colour * intensity; _LightColor0 in UnityLightingCommon.cginc
+    float4x4 unity_WorldToLight;        // world -> light space scaled by 1/range (point, spot)
+    float4 _LightPositionRange;         // xyz = position, w = 1/range
+    float4 _FacetSpotParams;            // x = cos(outer half angle), y = 1/(cos(inner) - cos(outer))
+    float4 _LightShadowData;            // x = shadow strength complement (1 - strength)
+    float4x4 unity_WorldToShadow[4];
+};
+sampler2D _LightTexture0 : register(s1, space1);          // light cookie (not used by facet's attenuation yet)
+sampler2D _ShadowMapTexture : register(s2, space1);
+
+// ---- set 3: per draw (the object) ------------------------------------------
+cbuffer FacetPerDraw : register(b0, space3)
+{
+    float4x4 unity_ObjectToWorld;
+    float4x4 unity_WorldToObject;
+    float4 unity_LODFade;
+    float4 unity_WorldTransformParams;  // w = -1 when the object is mirrored, else 1
+};
+
+#endif // FACET_BUILTINS_INCLUDED

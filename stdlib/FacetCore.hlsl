@@ -1,0 +1,118 @@
+// facet's core shader functions: transforms, colour, depth, normals, HDR
+// decoding, spherical harmonics and fog. UnityCG.cginc and friends are thin
+// aliases over these. Meanings and formulas: docs/stdlib.md.
+#ifndef FACET_CORE_INCLUDED
+#define FACET_CORE_INCLUDED
+
+#include "FacetBuiltins.hlsl"
+
+#define FACET_PI 3.14159265358979323846
+
+// ---- transforms (column vectors: mul(M, v)) ---------------------------------
+float3 FacetObjectToWorldPos(float3 pos) { return mul(unity_ObjectToWorld, float4(pos, 1.0)).xyz; }
+float4 FacetWorldToClipPos(float3 pos) { return mul(unity_MatrixVP, float4(pos, 1.0)); }
+float4 FacetObjectToClipPos(float3 pos) { return mul(unity_MatrixVP, mul(unity_ObjectToWorld, float4(pos, 1.0))); }
+float4 FacetViewToClipPos(float3 pos) { return mul(unity_MatrixP, float4(pos, 1.0)); }
+float3 FacetWorldToViewPos(float3 pos) { return mul(unity_MatrixV, float4(pos, 1.0)).xyz; }
+float3 FacetObjectToViewPos(float3 pos) { return FacetWorldToViewPos(FacetObjectToWorldPos(pos)); }
+// Directions are normalised; normals use the inverse transpose.
+float3 FacetObjectToWorldDir(float3 dir) { return normalize(mul((float3x3)unity_ObjectToWorld, dir)); }
+float3 FacetWorldToObjectDir(float3 dir) { return normalize(mul((float3x3)unity_WorldToObject, dir)); }
+float3 FacetObjectToWorldNormal(float3 n) { return normalize(mul(n, (float3x3)unity_WorldToObject)); }
+// Unnormalised: from the point towards the camera / the light.
+float3 FacetWorldViewDir(float3 worldPos) { return _WorldSpaceCameraPos.xyz - worldPos; }
+float3 FacetWorldLightDir(float3 worldPos) { return _WorldSpaceLightPos0.xyz - worldPos * _WorldSpaceLightPos0.w; }
+
+// ---- colour -----------------------------------------------------------------
+// The exact sRGB transfer functions (IEC 61966-2-1), per channel.
+float3 FacetSrgbToLinear(float3 c)
+{
+    float3 lo = c / 12.92;
+    float3 hi = pow(max((c + 0.055) / 1.055, 0.0), 2.4);
+    return lerp(hi, lo, step(c, 0.04045));
+}
+float3 FacetLinearToSrgb(float3 c)
+{
+    c = max(c, 0.0);
+    float3 lo = c * 12.92;
+    float3 hi = 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+    return lerp(hi, lo, step(c, 0.0031308));
+}
+// Relative luminance of a linear Rec.709 colour.
+float FacetLuminance(float3 linearRgb) { return dot(linearRgb, float3(0.2126729, 0.7151522, 0.0721750)); }
+
+// ---- depth (clip depth 0..1, not reversed; see _ZBufferParams) --------------
+float FacetLinear01Depth(float z) { return 1.0 / (_ZBufferParams.x * z + _ZBufferParams.y); }
+float FacetLinearEyeDepth(float z) { return 1.0 / (_ZBufferParams.z * z + _ZBufferParams.w); }
+
+// ---- normal maps --------------------------------------------------------------
+// x and y from the map scaled to -1..1, z rebuilt so the normal has length 1.
+// x is multiplied by alpha so that maps with x in alpha (DXT5nm) decode too;
+// plain RGB maps have alpha 1. With UNITY_NO_DXT5nm, xyz are used as stored.
+float3 FacetUnpackNormal(float4 packed)
+{
+#if defined(UNITY_NO_DXT5nm)
+    return packed.xyz * 2.0 - 1.0;
+#else
+    packed.x *= packed.w;
+    float3 n;
+    n.xy = packed.xy * 2.0 - 1.0;
+    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
+    return n;
+#endif
+}
+
+// ---- HDR textures ---------------------------------------------------------------
+// instructions: x = multiplier, y = exponent applied to alpha, w = 1 when
+// alpha carries a range (RGBM), 0 when the texture is plain HDR.
+float3 FacetDecodeHDR(float4 data, float4 instructions)
+{
+    float alpha = instructions.w * (data.a - 1.0) + 1.0;
+    return (instructions.x * pow(max(alpha, 0.0), instructions.y)) * data.rgb;
+}
+
+// ---- spherical harmonics -------------------------------------------------------
+// Irradiance for a unit world normal n (n.w must be 1): the L0+L1 terms are a
+// dot product with unity_SHA*, the L2 terms use n.xyzz * n.yzzx and
+// n.x^2 - n.y^2 (Sloan, "Stupid Spherical Harmonics Tricks", 2008).
+float3 FacetShadeSH9(float4 n)
+{
+    float3 l01 = float3(dot(unity_SHAr, n), dot(unity_SHAg, n), dot(unity_SHAb, n));
+    float4 b = n.xyzz * n.yzzx;
+    float3 l2 = float3(dot(unity_SHBr, b), dot(unity_SHBg, b), dot(unity_SHBb, b));
+    l2 += unity_SHC.rgb * (n.x * n.x - n.y * n.y);
+    return max(l01 + l2, 0.0);
+}
+
+// ---- fog -------------------------------------------------------------------------
+// Distance from the camera plane for a clip-space position: w for a
+// perspective projection, near + z * (far - near) for an orthographic one.
+float FacetFogDistance(float4 clipPos)
+{
+    float ortho = _ProjectionParams.y + clipPos.z * (_ProjectionParams.z - _ProjectionParams.y);
+    return lerp(clipPos.w, ortho, unity_OrthoParams.w);
+}
+// The fog interpolator with the fog distance in .x, for interpolators of any
+// width (UNITY_FOG_COORDS declares a float1, UNITY_FOG_COORDS_PACKED wider
+// ones). Returned rather than written through `inout`/`.x`: glslang 12
+// cannot write through a float1 struct member.
+float FacetWithFogDistance(float coord, float distance) { return distance; }
+float2 FacetWithFogDistance(float2 coord, float distance) { coord.x = distance; return coord; }
+float3 FacetWithFogDistance(float3 coord, float distance) { coord.x = distance; return coord; }
+float4 FacetWithFogDistance(float4 coord, float distance) { coord.x = distance; return coord; }
+// 1 = no fog, 0 = only fog colour, following the FOG_* keyword in use.
+float FacetFogFactor(float distance)
+{
+#if defined(FOG_LINEAR)
+    return saturate(distance * unity_FogParams.z + unity_FogParams.w);
+#elif defined(FOG_EXP)
+    return saturate(exp2(-unity_FogParams.y * distance));
+#elif defined(FOG_EXP2)
+    float d = unity_FogParams.x * distance;
+    return saturate(exp2(-d * d));
+#else
+    return 1.0;
+#endif
+}
+
+#endif // FACET_CORE_INCLUDED

@@ -1,0 +1,3 @@
+// Includes itself without a guard.
+#include "self.cginc"
+float4 _SelfValue;
