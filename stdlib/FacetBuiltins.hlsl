@@ -45,7 +45,10 @@ cbuffer FacetPerFrame : register(b0, space0)
     float4 unity_SpecCube0_ProbePosition;
 };
 samplerCUBE unity_SpecCube0 : register(s1, space0);       // prefiltered environment radiance
-sampler2D _CameraDepthTexture : register(s2, space0);     // raw depth of the camera, .r
+// _CameraDepthTexture is not declared here: as in Unity, a shader that reads
+// the camera's depth declares `sampler2D _CameraDepthTexture;` itself (the
+// name is the convention), so it lands in the material set like any texture
+// and the runtime binds the depth texture there by name.
 
 // ---- set 1: the light of the pass ------------------------------------------
 cbuffer FacetPerLight : register(b0, space1)

@@ -99,6 +99,14 @@ class Compiler {
   backend::Backend backend_;
 };
 
+// Input size limits: a .shader (and each included file) and a .facetpkg.
+inline constexpr uint64_t kMaxShaderBytes = 64ull << 20;
+inline constexpr uint64_t kMaxPackageBytes = 1ull << 30;
+
+// Reads a whole file as bytes; refuses directories and files over `max_bytes`
+// with an io_* diagnostic.
+Result<std::string> read_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags);
+
 // Writes `bytes` to `path` through a temporary file and a rename, so that a
 // failure never leaves a partial file behind.
 Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags);

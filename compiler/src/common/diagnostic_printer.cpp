@@ -32,6 +32,39 @@ std::string location_prefix(const SourceSpan& span, const SourceMap& sources) {
   return fmt::format("{}:{}:{}: ", sources.path(span.file), lc.line, lc.column);
 }
 
+// Length of the valid UTF-8 sequence at `i`, or 0 when the bytes are not one.
+size_t utf8_length(std::string_view s, size_t i) {
+  unsigned char c = static_cast<unsigned char>(s[i]);
+  size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k) {
+    if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return 0;
+  }
+  return n;
+}
+
+// The line as a terminal can show it: control bytes and invalid UTF-8 become
+// '?', one byte each, so byte columns still line the caret up.
+std::string printable(std::string_view line) {
+  std::string out;
+  for (size_t i = 0; i < line.size();) {
+    size_t n = utf8_length(line, i);
+    unsigned char c = static_cast<unsigned char>(line[i]);
+    if (n == 0 || (n == 1 && ((c < 0x20 && c != '\t') || c == 0x7f))) {
+      out += '?';
+      ++i;
+    } else {
+      out.append(line.substr(i, n));
+      i += n;
+    }
+  }
+  return out;
+}
+
+// At most this many bytes of a source line are shown, around the caret, so a
+// 10 MB one-line file gives a short message.
+constexpr size_t kExcerptWidth = 240;
+
 // "   12 |     foo bar\n      |     ^~~\n". Tabs are kept so the caret lines up.
 std::string source_excerpt(const SourceSpan& span, const SourceMap& sources, const RenderOptions& options) {
   if (!span.has_location() || span.file >= sources.file_count()) return {};
@@ -39,15 +72,20 @@ std::string source_excerpt(const SourceSpan& span, const SourceMap& sources, con
   std::string_view line = sources.line_text(span.file, begin.line);
   if (line.empty() && sources.text(span.file).empty()) return {};
   std::string gutter = fmt::format("{:>5}", begin.line);
-  std::string marker;
   size_t caret_at = std::min<size_t>(begin.column - 1, line.size());
+  if (line.size() > kExcerptWidth) {
+    size_t start = caret_at > kExcerptWidth / 2 ? caret_at - kExcerptWidth / 2 : 0;
+    line = line.substr(start, kExcerptWidth);
+    caret_at -= start;
+  }
+  std::string marker;
   for (size_t i = 0; i < caret_at; ++i) marker += line[i] == '\t' ? '\t' : ' ';
   size_t length = span.end > span.begin ? span.end - span.begin : 1;
   length = std::max<size_t>(1, std::min(length, line.size() > caret_at ? line.size() - caret_at : 1));
   marker += options.color ? "\x1b[1;32m^" : "^";
   marker += std::string(length - 1, '~');
   if (options.color) marker += "\x1b[0m";
-  return fmt::format("{} | {}\n{} | {}\n", gutter, line, std::string(gutter.size(), ' '), marker);
+  return fmt::format("{} | {}\n{} | {}\n", gutter, printable(line), std::string(gutter.size(), ' '), marker);
 }
 
 std::string headline(Severity severity, const SourceSpan& span, const std::string& message,

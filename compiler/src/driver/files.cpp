@@ -1,6 +1,9 @@
 // File input and output for the driver: bounded reads, atomic writes.
 #include <fmt/format.h>
 
+#include <unistd.h>
+
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,7 +17,7 @@
 namespace facet {
 namespace fs = std::filesystem;
 
-Result<std::string> read_text_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags) {
+Result<std::string> read_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     diags.add(DiagId::io_cannot_read, {}, fmt::format("'{}' is a directory", path));
@@ -43,7 +46,9 @@ Result<std::string> read_text_file(const std::string& path, uint64_t max_bytes, 
 Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags) {
   fs::path target(path);
   fs::path temp = target;
-  temp += fmt::format(".tmp{}", std::rand());
+  // Unique per process and call, so concurrent writers never share a temp file.
+  static std::atomic<uint64_t> counter{0};
+  temp += fmt::format(".tmp.{}.{}", ::getpid(), counter++);
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) {
@@ -70,12 +75,7 @@ Result<void> write_file_atomically(const std::string& path, std::string_view byt
   return {};
 }
 
-std::string default_stdlib_dir() {
-  if (const char* env = std::getenv("FACET_STDLIB_DIR"); env && *env) return env;
-  std::error_code ec;
-  if (fs::exists(fs::path(FACET_BUILD_STDLIB_DIR) / "UnityCG.cginc", ec)) return FACET_BUILD_STDLIB_DIR;
-  return FACET_INSTALL_STDLIB_DIR;
-}
+std::string default_stdlib_dir() { return backend::default_stdlib_dir(); }
 
 std::string version_string() { return fmt::format("facet {} (glslang 12, SPIRV-Tools, SPIRV-Cross)", FACET_VERSION); }
 

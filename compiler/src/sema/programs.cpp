@@ -23,11 +23,19 @@ ir::ProgramLanguage language(ast::ProgramLanguage l) {
 
 ir::SourceChunk chunk(const ast::ProgramBlock& block) { return {block.text, block.text_span, block.first_line}; }
 
-// "3.0" -> 30, "5" -> 50; nullopt when not "d" or "d.d".
+// "3.0" -> 30, "3" -> 30, "es3.0" -> 35; nullopt unless one of kTargets
+// (or a single digit or an OpenGL/ES alias of one).
 std::optional<int> parse_target(std::string_view s) {
-  auto digit = [](char c) { return c >= '0' && c <= '9'; };
-  if (s.size() == 1 && digit(s[0])) return (s[0] - '0') * 10;
-  if (s.size() == 3 && digit(s[0]) && s[1] == '.' && digit(s[2])) return (s[0] - '0') * 10 + (s[2] - '0');
+  static const std::pair<std::string_view, int> aliases[] = {
+      {"es2.0", 20}, {"es3.0", 35}, {"es3.1", 45}, {"es3.1+aep", 46}, {"gl4.1", 40}, {"gl4.3", 45}};
+  for (auto [name, value] : aliases) {
+    if (s == name) return value;
+  }
+  std::string text(s);
+  if (s.size() == 1) text += ".0";
+  for (std::string_view t : kTargets) {
+    if (text == t) return (t[0] - '0') * 10 + (t[2] - '0');
+  }
   return std::nullopt;
 }
 

@@ -126,11 +126,13 @@ std::vector<ir::Property> lower_properties(const std::vector<ast::Property>& pro
           .note(first->second->name_span, "'" + p.name + "' was first declared here");
       continue;
     }
-    ir::Property prop;
-    prop.name = p.name;
-    prop.display_name = p.display_name;
-    prop.span = p.span;
-    for (const ast::Attribute& a : p.attributes) prop.attributes.push_back({a.name, a.args, a.span});
+    ir::Property prop{.name = p.name, .display_name = p.display_name, .span = p.span};
+    for (const ast::Attribute& a : p.attributes) {
+      ir::PropertyAttribute& attribute = prop.attributes.emplace_back();
+      attribute.name = a.name;
+      attribute.args = a.args;
+      attribute.span = a.span;
+    }
     auto type = lookup_type(p, ctx);
     if (!type) continue;
     prop.type = *type;

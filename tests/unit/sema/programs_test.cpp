@@ -130,7 +130,9 @@ INSTANTIATE_TEST_SUITE_P(Targets, SemaShaderTargetTest,
                                          TargetCase{"#pragma target 3.0\n#pragma target 3.5", 35},
                                          TargetCase{"#pragma geometry g", 40},
                                          TargetCase{"#pragma target 3.0\n#pragma hull h\n#pragma domain d", 46},
-                                         TargetCase{"#pragma target 5.0\n#pragma geometry g", 50}));
+                                         TargetCase{"#pragma target 5.0\n#pragma geometry g", 50},
+                                         TargetCase{"#pragma target es3.0", 35},
+                                         TargetCase{"#pragma target gl4.1", 40}));
 
 TEST(SemaProgramsTest, BadTargetListsValidOnes) {
   auto a = analyze_text(cg_pass("#pragma target three"));
@@ -140,6 +142,11 @@ TEST(SemaProgramsTest, BadTargetListsValidOnes) {
   EXPECT_EQ(d->message, "invalid shader target 'three'");
   EXPECT_EQ(d->notes.at(0).message, "valid targets are 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 4.6, 5.0");
   EXPECT_EQ(a->at(d->span).line, 3u);
+  for (const char* bad : {"9.7", "1", "3.7", "30"}) {
+    auto b = analyze_text(cg_pass(std::string("#pragma target ") + bad));
+    EXPECT_FALSE(b->ir) << bad;
+    EXPECT_NE(b->find(DiagId::sema_bad_shader_target), nullptr) << bad;
+  }
 }
 
 TEST(SemaProgramsTest, ConflictingEntryPointIsAnError) {

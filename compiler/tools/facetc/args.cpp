@@ -1,0 +1,238 @@
+// facetc's command line, parsed by CLI11 (the one place its exceptions are caught).
+#include "args.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "facet/compiler.h"
+
+namespace facet::tools {
+namespace {
+
+// Everything CLI11 binds to before it is checked and turned into FacetcArgs.
+struct RawArgs {
+  std::vector<std::string> inputs, defines, include_dirs, passes, keywords, disabled_groups;
+  std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage;
+  std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
+  bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
+  bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
+  bool depfile_only = false, write_depfile = false, stats = false, version = false;
+  uint64_t max_variants = 65536;
+};
+
+void add_options(CLI::App& app, RawArgs& raw) {
+  app.add_option("inputs", raw.inputs, ".shader files (or .facetpkg files with --dump)");
+  app.add_option("-o", raw.output, "output file; '-' is standard output");
+  app.add_option("--out-dir", raw.out_dir, "folder for the packages of several inputs");
+  app.add_option("-D", raw.defines, "define a macro: NAME or NAME=VALUE");
+  app.add_option("-I", raw.include_dirs, "add a folder to the #include search path");
+  app.add_option("--opt", raw.opt, "optimisation (also -O, -Os, -O0)")
+      ->check(CLI::IsMember({"performance", "size", "none"}));
+  app.add_flag("-g", raw.debug_info, "keep debug information in the SPIR-V");
+  app.add_option("--target-env", raw.target_env, "vulkan1.1 (default), vulkan1.2 or opengl4.5")
+      ->check(CLI::IsMember({"vulkan1.1", "vulkan1.2", "opengl4.5"}));
+  app.add_option("--stdlib-dir", raw.stdlib_dir, "the stdlib folder (default: the built-in one)");
+  app.add_flag("-E", raw.preprocess, "print the preprocessed source of the selected variant");
+  app.add_flag("-S", raw.assemble, "print SPIR-V assembly (or --emit's kind) instead of a package");
+  app.add_option("--emit", raw.emit, "spirv-asm, spirv, glsl, essl or msl (implies -S)")
+      ->check(CLI::IsMember({"spirv-asm", "spirv", "glsl", "essl", "msl"}));
+  app.add_flag("--reflect", raw.reflect, "print the reflection of the selected variant as JSON");
+  app.add_flag("--list-variants", raw.list_variants, "print keyword sets, counts and every variant");
+  app.add_option("--dump", raw.dump, "print as JSON: package (default), ast, ir or variants")
+      ->check(CLI::IsMember({"package", "ast", "ir", "variants"}));
+  app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable");
+  app.add_option("--stage", raw.stage, "vertex, fragment, geometry, hull or domain");
+  app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"");
+  app.add_flag("--all-variants", raw.all_variants, "every variant (the default for packages)");
+  app.add_flag("--strict-variants", raw.strict_variants, "a keyword set without its exact variant is an error");
+  app.add_option("--max-variants", raw.max_variants, "refuse passes with more variants (0: no limit)");
+  app.add_flag("-w", raw.no_warnings, "suppress every warning");
+  app.add_flag("--Werror", raw.werror, "treat warnings as errors (also -Werror)");
+  app.add_option("--Wno", raw.disabled_groups, "switch a warning group off (also -Wno-<group>)");
+  app.add_option("--diagnostics-format", raw.diagnostics_format, "text (default) or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--color", raw.color, "auto (default), always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_flag("-M", raw.depfile_only, "print the make rule of the files the build reads; build nothing");
+  app.add_flag("--MD", raw.write_depfile, "also write a depfile (also -MD)");
+  app.add_option("--MF", raw.depfile, "the depfile's path (also -MF)");
+  app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
+  app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
+  app.add_flag("--version", raw.version, "print the version and exit");
+}
+
+std::vector<std::string> split_keywords(const std::vector<std::string>& lists) {
+  std::vector<std::string> out;
+  for (const std::string& list : lists) {
+    std::string word;
+    std::istringstream in(list);
+    while (in >> word) {
+      for (size_t comma; (comma = word.find(',')) != std::string::npos;) {
+        if (comma > 0) out.push_back(word.substr(0, comma));
+        word.erase(0, comma + 1);
+      }
+      if (!word.empty()) out.push_back(word);
+    }
+  }
+  return out;
+}
+
+std::optional<std::string> apply_defines(const RawArgs& raw, backend::BackendOptions& options) {
+  for (const std::string& d : raw.defines) {
+    auto eq = d.find('=');
+    std::string name = d.substr(0, eq);
+    if (name.empty()) return fmt::format("-D needs a macro name, got '{}'", d);
+    options.defines.emplace_back(name, eq == std::string::npos ? "1" : d.substr(eq + 1));
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
+  std::vector<std::pair<bool, Mode>> modes = {
+      {raw.preprocess, Mode::preprocess},       {raw.assemble || !raw.emit.empty(), Mode::emit},
+      {raw.reflect, Mode::reflect},             {raw.list_variants, Mode::list_variants},
+      {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only}};
+  int chosen = 0;
+  for (auto [on, mode] : modes) {
+    if (on) {
+      args.mode = mode;
+      ++chosen;
+    }
+  }
+  if (chosen > 1) return "-E, -S/--emit, --reflect, --list-variants, --dump and -M exclude each other";
+  static const std::map<std::string, EmitKind> emits = {{"", EmitKind::spirv_asm},
+      {"spirv-asm", EmitKind::spirv_asm}, {"spirv", EmitKind::spirv}, {"glsl", EmitKind::glsl},
+      {"essl", EmitKind::essl}, {"msl", EmitKind::msl}};
+  static const std::map<std::string, DumpKind> dumps = {{"", DumpKind::package}, {"package", DumpKind::package},
+      {"ast", DumpKind::ast}, {"ir", DumpKind::ir}, {"variants", DumpKind::variants}};
+  args.emit = emits.at(raw.emit);
+  args.dump = dumps.at(raw.dump);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
+  if (args.inputs.empty()) return "no input files";
+  if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1) {
+    return "-o names one output file; give one input (or --out-dir for the packages of several)";
+  }
+  if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
+  if (!args.output.empty() && !args.out_dir.empty()) return "-o and --out-dir exclude each other";
+  if (args.mode == Mode::emit && args.emit == EmitKind::spirv && args.output.empty()) {
+    return "--emit=spirv writes binary SPIR-V; name the file with -o (or '-o -' for standard output)";
+  }
+  if (raw.all_variants && !raw.keywords.empty()) return "--keywords selects one variant; --all-variants every one";
+  if ((!raw.depfile.empty() || !raw.dep_target.empty()) && !raw.write_depfile && !raw.depfile_only) {
+    return "-MF and -MT need -M or -MD";
+  }
+  if (raw.write_depfile && args.mode != Mode::package && args.mode != Mode::emit && args.mode != Mode::reflect &&
+      args.mode != Mode::preprocess) {
+    return "-MD goes with an output: a package, -E, -S or --reflect";
+  }
+  if (raw.write_depfile && raw.depfile.empty() && (args.output.empty() || args.output == "-") &&
+      args.mode != Mode::package) {
+    return "-MD writes <output>.d; name the output with -o or the depfile with -MF";
+  }
+  if (!raw.depfile.empty() && args.inputs.size() > 1) return "-MF names one depfile; give one input";
+  return std::nullopt;
+}
+
+Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
+  FacetcArgs args;
+  args.inputs = raw.inputs;
+  args.output = raw.output;
+  args.out_dir = raw.out_dir;
+  args.passes = raw.passes;
+  args.all_variants = raw.all_variants;
+  args.strict_variants = raw.strict_variants;
+  args.max_variants = raw.max_variants;
+  args.stats = raw.stats;
+  if (!raw.keywords.empty()) args.keywords = split_keywords(raw.keywords);
+  if (!raw.stage.empty()) {
+    args.stage = parse_stage(raw.stage);
+    if (!args.stage) error = fmt::format("unknown stage '{}'; use vertex, fragment, geometry, hull or domain", raw.stage);
+  }
+  static const std::map<std::string, backend::OptLevel> opts = {{"performance", backend::OptLevel::performance},
+      {"size", backend::OptLevel::size}, {"none", backend::OptLevel::none}};
+  static const std::map<std::string, backend::TargetEnv> envs = {{"vulkan1.1", backend::TargetEnv::vulkan1_1},
+      {"vulkan1.2", backend::TargetEnv::vulkan1_2}, {"opengl4.5", backend::TargetEnv::opengl4_5}};
+  args.backend.opt = opts.at(raw.opt);
+  args.backend.target = envs.at(raw.target_env);
+  args.backend.debug_info = raw.debug_info;
+  args.backend.include_dirs = raw.include_dirs;
+  args.backend.stdlib_dir = raw.stdlib_dir;
+  args.warnings = {.suppress_all = raw.no_warnings, .warnings_as_errors = raw.werror,
+                   .disabled_groups = raw.disabled_groups};
+  args.diagnostics_format = raw.diagnostics_format == "json" ? DiagnosticsFormat::json : DiagnosticsFormat::text;
+  if (raw.color != "auto") args.color = raw.color == "always";
+  args.write_depfile = raw.write_depfile;
+  args.depfile = raw.depfile;
+  args.dep_target = raw.dep_target;
+  if (error.empty()) {
+    if (auto e = apply_defines(raw, args.backend)) error = *e;
+  }
+  if (error.empty()) {
+    if (auto e = choose_mode(raw, args)) error = *e;
+  }
+  if (error.empty()) {
+    if (auto e = check_consistency(raw, args)) error = *e;
+  }
+  if (!error.empty()) return failure(error);
+  return args;
+}
+
+}  // namespace
+
+std::vector<std::string> normalize_args(const std::vector<std::string>& argv) {
+  static const std::map<std::string, std::string> spelled = {
+      {"-O", "--opt=performance"}, {"-Os", "--opt=size"}, {"-O0", "--opt=none"}, {"-O1", "--opt=performance"},
+      {"-O2", "--opt=performance"}, {"-O3", "--opt=performance"}, {"-Werror", "--Werror"},
+      {"-MD", "--MD"}, {"-MF", "--MF"}, {"-MT", "--MT"}, {"--dump", "--dump=package"}};
+  std::vector<std::string> out;
+  bool after_double_dash = false;
+  for (const std::string& a : argv) {
+    if (after_double_dash) {
+      out.push_back(a);
+    } else if (a == "--") {
+      after_double_dash = true;
+      out.push_back(a);
+    } else if (auto it = spelled.find(a); it != spelled.end()) {
+      out.push_back(it->second);
+    } else if (a.starts_with("-Wno-") && a.size() > 5) {
+      out.push_back("--Wno=" + a.substr(5));
+    } else {
+      out.push_back(a);
+    }
+  }
+  return out;
+}
+
+ParsedArgs parse_args(const std::vector<std::string>& argv) {
+  CLI::App app{"facetc: compiles ShaderLab .shader files to SPIR-V packages (see docs/cli.md)", "facetc"};
+  app.get_formatter()->column_width(28);
+  RawArgs raw;
+  add_options(app, raw);
+  std::vector<std::string> reversed = normalize_args(argv);
+  std::reverse(reversed.begin(), reversed.end());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    return {.text = app.help(), .exit_code = 0};
+  } catch (const CLI::ParseError& e) {
+    return {.text = fmt::format("facetc: error: {}\n(run 'facetc --help' for the options)\n", e.what()),
+            .exit_code = 2};
+  }
+  if (raw.version) return {.text = version_string() + "\n", .exit_code = 0};
+  std::string error;
+  Result<FacetcArgs> args = build(raw, error);
+  if (!args) {
+    return {.text = fmt::format("facetc: error: {}\n(run 'facetc --help' for the options)\n", args.error().reason),
+            .exit_code = 2};
+  }
+  return {.args = std::move(*args)};
+}
+
+}  // namespace facet::tools

@@ -1,0 +1,70 @@
+// facetc's command line: glslc's conventions where they apply (docs/cli.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/backend.h"
+#include "facet/diagnostics.h"
+#include "facet/stage.h"
+
+namespace facet::tools {
+
+// What one run produces. Exactly one per run.
+enum class Mode {
+  package,        // default: every selected pass and variant -> .facetpkg
+  preprocess,     // -E: preprocessed source of the selected variant(s)
+  emit,           // -S / --emit=...: SPIR-V assembly, SPIR-V, GLSL, ESSL or MSL
+  reflect,        // --reflect: reflection JSON
+  list_variants,  // --list-variants: keyword sets, counts and every variant
+  dump,           // --dump[=package|ast|ir|variants]
+  depfile_only,   // -M: the make rule of every file the build reads, nothing else
+};
+
+enum class EmitKind { spirv_asm, spirv, glsl, essl, msl };
+enum class DumpKind { package, ast, ir, variants };
+enum class DiagnosticsFormat { text, json };
+
+struct FacetcArgs {
+  Mode mode = Mode::package;
+  EmitKind emit = EmitKind::spirv_asm;
+  DumpKind dump = DumpKind::package;
+  std::vector<std::string> inputs;
+  std::string output;      // -o; "-" is standard output; "" = the mode's default
+  std::string out_dir;     // --out-dir
+  std::vector<std::string> passes;   // --pass (repeatable)
+  std::optional<Stage> stage;        // --stage
+  std::optional<std::vector<std::string>> keywords;  // --keywords "A B"
+  bool all_variants = false;
+  bool strict_variants = false;
+  uint64_t max_variants = 65536;
+  backend::BackendOptions backend;   // -D -I -O -g --target-env --stdlib-dir
+  WarningOptions warnings;           // -w -Werror -Wno-<group>
+  DiagnosticsFormat diagnostics_format = DiagnosticsFormat::text;
+  std::optional<bool> color;  // --color=always|never; nullopt (auto): when stderr is a terminal
+  // Depfiles: -MD (beside the output), -MF FILE, -MT TARGET.
+  bool write_depfile = false;
+  std::string depfile;
+  std::string dep_target;
+  bool stats = false;
+};
+
+// What parse_args decided: run with these arguments, or print `text` and
+// exit with `exit_code` (--help and --version: 0 on stdout; usage errors: 2
+// on stderr).
+struct ParsedArgs {
+  std::optional<FacetcArgs> args;
+  std::string text;
+  int exit_code = 0;
+};
+
+// glslc spells some options with one dash and several letters (-O0, -Os,
+// -Werror, -Wno-x, -MD, -MF, -MT), which CLI11 reads as bundled short flags;
+// this rewrites those spellings to their long forms first.
+std::vector<std::string> normalize_args(const std::vector<std::string>& argv);
+
+// argv without the program name.
+ParsedArgs parse_args(const std::vector<std::string>& argv);
+
+}  // namespace facet::tools

@@ -1,0 +1,210 @@
+// facetc's per-input recipe: read -> produce the output in memory -> report
+// diagnostics -> write the output (and depfile) only when nothing failed.
+#include "run.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "facet/compiler.h"
+#include "facet/package.h"
+#include "facet/sema.h"
+#include "facet/shaderlab.h"
+#include "units.h"
+
+namespace facet::tools {
+namespace {
+namespace fs = std::filesystem;
+
+// What one input produced, before anything is written.
+struct Produced {
+  std::string bytes;
+  std::string output;  // where: a path, or "" / "-" for standard output
+  std::string stats;   // the --stats line, if any
+  bool usage_error = false;
+};
+
+bool is_package_file(const std::string& path) { return fs::path(path).extension() == ".facetpkg"; }
+
+std::string package_output_path(const FacetcArgs& args, const std::string& input) {
+  if (!args.output.empty()) return args.output;
+  fs::path name = fs::path(input).stem();
+  name += ".facetpkg";
+  return (args.out_dir.empty() ? name : fs::path(args.out_dir) / name).string();
+}
+
+std::string pass_header(const ir::Pass& pass, size_t index) {
+  std::string light_mode = pass.tag("LightMode");
+  return fmt::format("pass #{}{}{}\n", index, pass.name.empty() ? "" : fmt::format(" '{}'", pass.name),
+                     light_mode.empty() ? "" : " (LightMode " + light_mode + ")");
+}
+
+Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader,
+                                   bool list, Diagnostics& diags) {
+  auto passes = compiler.select_passes(shader, compile_options(args, false), diags);
+  FACET_TRY(passes);
+  std::string out = fmt::format("shader '{}'\n", shader.name);
+  for (const SelectedPass& pass : *passes) {
+    variants::DumpOptions options{.stages = 0, .list_variants = list};
+    for (int s = 0; s < kStageCount; ++s) {
+      if (pass.ir->program->has_stage(Stage(s))) options.stages |= stage_bit(Stage(s));
+    }
+    if (args.stage) options.stages &= stage_bit(*args.stage);
+    out += pass_header(*pass.ir, pass.pass);
+    out += variants::dump_keyword_space(pass.keywords, options);
+  }
+  return out;
+}
+
+Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader,
+                               const std::string& input, SourceMap& sources, Diagnostics& diags) {
+  auto compiled = compiler.compile(shader, compile_options(args, false), sources, diags);
+  FACET_TRY(compiled);
+  std::vector<uint8_t> bytes = package::write_package(compiled->package);
+  const CompileStats& s = compiled->stats;
+  Produced out{.bytes = std::string(bytes.begin(), bytes.end()), .output = package_output_path(args, input)};
+  out.stats = fmt::format("facetc: {}: {} passes, {} variants, {} stage programs compiled, {} unique SPIR-V, "
+                          "{} bytes, {:.2f} s\n",
+                          input, s.passes, s.variants, s.stage_programs, s.unique_spirv, bytes.size(), s.seconds);
+  if (args.mode == Mode::dump) out.bytes = package::package_to_json(compiled->package);
+  return out;
+}
+
+Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags) {
+  auto bytes = read_file(input, kMaxPackageBytes, diags);
+  FACET_TRY(bytes);
+  auto pkg = package::read_package(
+      std::span(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()), diags);
+  if (!pkg) {
+    for (Diagnostic& d : diags.mutable_all()) d.message = input + ": " + d.message;
+    return failure("corrupt package");
+  }
+  return Produced{.bytes = package::package_to_json(*pkg)};
+}
+
+Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const std::string& input,
+                         SourceMap& sources, Diagnostics& diags) {
+  if (args.mode == Mode::dump && is_package_file(input)) return dump_package_file(input, diags);
+  if (args.mode == Mode::dump && args.dump == DumpKind::ast) {
+    auto text = read_file(input, kMaxShaderBytes, diags);
+    FACET_TRY(text);
+    auto ast = shaderlab::parse(sources.add_file(input, std::move(*text)), sources, {}, diags);
+    FACET_TRY(ast);
+    return Produced{.bytes = shaderlab::ast_to_json(*ast, sources), .output = args.output};
+  }
+  auto shader = compiler.load(input, sources, diags);
+  FACET_TRY(shader);
+  switch (args.mode) {
+    case Mode::package:
+    case Mode::depfile_only:
+      return build_package(args, compiler, *shader, input, sources, diags);
+    case Mode::dump:
+      if (args.dump == DumpKind::ir) return Produced{.bytes = sema::ir_to_json(*shader), .output = args.output};
+      if (args.dump == DumpKind::package) {
+        auto built = build_package(args, compiler, *shader, input, sources, diags);
+        FACET_TRY(built);
+        built->output = args.output;
+        return built;
+      }
+      [[fallthrough]];
+    case Mode::list_variants: {
+      auto text = keyword_spaces(args, compiler, *shader, args.mode == Mode::list_variants, diags);
+      FACET_TRY(text);
+      return Produced{.bytes = std::move(*text), .output = args.output};
+    }
+    case Mode::preprocess:
+    case Mode::emit:
+    case Mode::reflect: {
+      auto units = produce_units(args, compiler, *shader, sources, diags);
+      FACET_TRY(units);
+      return Produced{.bytes = std::move(units->bytes), .output = args.output, .usage_error = units->usage_error};
+    }
+  }
+  return failure("unknown mode");
+}
+
+// Every real file the input read: itself first, then its includes, sorted.
+std::vector<std::string> dependencies(const std::string& input, const SourceMap& sources) {
+  std::vector<std::string> deps;
+  for (FileId id = 0; id < sources.file_count(); ++id) {
+    const std::string& path = sources.path(id);
+    if (!path.starts_with("<") && path != input) deps.push_back(path);
+  }
+  std::sort(deps.begin(), deps.end());
+  deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
+  deps.insert(deps.begin(), input);
+  return deps;
+}
+
+bool to_stdout(const std::string& output) { return output.empty() || output == "-"; }
+
+// Writes the output, then the depfile; false (with a diagnostic) on I/O failure.
+bool write_outputs(const FacetcArgs& args, const std::string& input, const Produced& produced,
+                   const SourceMap& sources, Console& console, Diagnostics& diags) {
+  std::string target = !args.dep_target.empty() ? args.dep_target
+                       : to_stdout(produced.output) ? package_output_path(args, input) : produced.output;
+  std::string rule = make_rule(target, dependencies(input, sources));
+  if (args.mode == Mode::depfile_only) {
+    if (args.depfile.empty()) {
+      console.out << rule;
+      return true;
+    }
+    return bool(write_file_atomically(args.depfile, rule, diags));
+  }
+  if (to_stdout(produced.output)) {
+    console.out.write(produced.bytes.data(), std::streamsize(produced.bytes.size()));
+    console.out.flush();
+  } else if (!write_file_atomically(produced.output, produced.bytes, diags)) {
+    return false;
+  }
+  if (!args.write_depfile) return true;
+  std::string depfile = !args.depfile.empty() ? args.depfile : produced.output + ".d";
+  return bool(write_file_atomically(depfile, rule, diags));
+}
+
+bool use_color(const FacetcArgs& args) { return args.color.value_or(isatty(STDERR_FILENO) == 1); }
+
+// One input, start to end. Returns its exit code.
+int process_input(const FacetcArgs& args, const Compiler& compiler, const std::string& input, Console& console,
+                  nlohmann::json& json_diagnostics) {
+  SourceMap sources;
+  Diagnostics raw;
+  Result<Produced> produced = produce(args, compiler, input, sources, raw);
+  Diagnostics diags = apply_warning_options(raw, args.warnings);
+  bool ok = produced && !produced->usage_error && !diags.has_errors();
+  if (ok && !write_outputs(args, input, *produced, sources, console, diags)) ok = false;
+  if (args.diagnostics_format == DiagnosticsFormat::json) {
+    for (auto& d : nlohmann::json::parse(render_json(diags, sources))) json_diagnostics.push_back(std::move(d));
+  } else {
+    console.err << render_text(diags, sources, {.color = use_color(args)});
+  }
+  if (ok && args.stats) console.err << produced->stats;
+  if (produced && produced->usage_error) return 2;
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+
+int run_facetc(const FacetcArgs& args, Console& console) {
+  if (!args.out_dir.empty()) {
+    std::error_code ec;
+    fs::create_directories(args.out_dir, ec);
+    if (ec) {
+      console.err << fmt::format("facetc: error: cannot create '{}': {}\n", args.out_dir, ec.message());
+      return 1;
+    }
+  }
+  Compiler compiler;
+  nlohmann::json json_diagnostics = nlohmann::json::array();
+  int exit_code = 0;
+  for (const std::string& input : args.inputs) {
+    exit_code = std::max(exit_code, process_input(args, compiler, input, console, json_diagnostics));
+  }
+  if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
+  return exit_code;
+}
+
+}  // namespace facet::tools
