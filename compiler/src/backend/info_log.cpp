@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 
 namespace facet::backend {
 namespace {
@@ -33,9 +32,59 @@ void split_token(std::string_view body, LogMessage& m) {
   m.text = std::string(body);
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Length of the run of digits at `pos`.
+size_t digits_at(std::string_view s, size_t pos) {
+  size_t n = 0;
+  while (pos + n < s.size() && is_digit(s[pos + n])) ++n;
+  return n;
+}
+
+// "2 compilation errors.  No code generated."
 bool is_noise(std::string_view rest) {
-  static const std::regex count_line(R"(^\d+ compilation errors?\..*)");
-  return std::regex_match(rest.begin(), rest.end(), count_line);
+  size_t n = digits_at(rest, 0);
+  if (n == 0) return false;
+  std::string_view after = rest.substr(n);
+  return after.starts_with(" compilation error.") || after.starts_with(" compilation errors.");
+}
+
+// Hand-written matchers for glslang's two located line forms (std::regex
+// recurses per character and can exhaust the stack on long lines).
+struct Located {
+  std::string file;
+  uint32_t line = 0;
+  uint32_t column = 0;
+  std::string text;
+};
+
+// "FILE:LINE: TEXT", FILE being the shortest prefix that makes it match.
+std::optional<Located> match_located(std::string_view s) {
+  for (size_t colon = s.find(':'); colon != std::string_view::npos; colon = s.find(':', colon + 1)) {
+    size_t n = digits_at(s, colon + 1);
+    if (n == 0 || n >= 9) continue;
+    size_t end = colon + 1 + n;
+    if (s.substr(end).starts_with(": ")) {
+      return Located{std::string(s.substr(0, colon)), uint32_t(std::stoul(std::string(s.substr(colon + 1, n)))), 0,
+                     std::string(s.substr(end + 2))};
+    }
+  }
+  return std::nullopt;
+}
+
+// "FILE(LINE): error at column COL, TEXT"
+std::optional<Located> match_parse_failed(std::string_view s) {
+  constexpr std::string_view marker = "): error at column ";
+  size_t at = s.rfind(marker);
+  if (at == std::string_view::npos) return std::nullopt;
+  size_t open = s.rfind('(', at);
+  if (open == std::string_view::npos || digits_at(s, open + 1) != at - open - 1 || at == open + 1) return std::nullopt;
+  size_t col_begin = at + marker.size();
+  size_t n = digits_at(s, col_begin);
+  if (n == 0 || n >= 9 || !s.substr(col_begin + n).starts_with(", ") || at - open - 1 >= 9) return std::nullopt;
+  return Located{std::string(s.substr(0, open)), uint32_t(std::stoul(std::string(s.substr(open + 1, at - open - 1)))),
+                 uint32_t(std::stoul(std::string(s.substr(col_begin, n)))),
+                 std::string(s.substr(col_begin + n + 2))};
 }
 
 // Byte position of `token` in `line`, whole words only for identifiers.
@@ -226,8 +275,6 @@ class LogMapper {
 }  // namespace
 
 std::vector<LogMessage> parse_info_log(std::string_view log) {
-  static const std::regex located(R"(^(.*?):(\d+): (.*)$)");
-  static const std::regex parse_failed(R"(^(.*)\((\d+)\): error at column (\d+), (.*)$)");
   static const std::vector<std::pair<std::string_view, Severity>> prefixes = {
       {"ERROR: ", Severity::error},          {"WARNING: ", Severity::warning},
       {"INTERNAL ERROR: ", Severity::error}, {"UNIMPLEMENTED: ", Severity::error},
@@ -240,15 +287,14 @@ std::vector<LogMessage> parse_info_log(std::string_view log) {
     std::string line(trim(log.substr(pos, eol - pos)));
     pos = eol + 1;
     if (line.empty()) continue;
-    std::smatch match;
     auto prefix = std::find_if(prefixes.begin(), prefixes.end(), [&](const auto& p) { return line.starts_with(p.first); });
     if (prefix == prefixes.end()) {
-      if (std::regex_match(line, match, parse_failed)) {
+      if (auto failed = match_parse_failed(line)) {
         LogMessage m;
-        m.file = match[1];
-        m.line = uint32_t(std::stoul(match[2]));
-        m.column = uint32_t(std::stoul(match[3]));
-        m.text = match[4];
+        m.file = std::move(failed->file);
+        m.line = failed->line;
+        m.column = failed->column;
+        m.text = std::move(failed->text);
         m.parse_failed_marker = true;
         out.push_back(std::move(m));
       } else if (!out.empty()) {
@@ -260,10 +306,10 @@ std::vector<LogMessage> parse_info_log(std::string_view log) {
     if (is_noise(rest)) continue;
     LogMessage m;
     m.severity = prefix->second;
-    if (std::regex_match(rest, match, located) && match[2].length() < 9) {
-      m.file = match[1];
-      m.line = uint32_t(std::stoul(match[2]));
-      split_token(std::string(match[3]), m);
+    if (auto located = match_located(rest)) {
+      m.file = std::move(located->file);
+      m.line = located->line;
+      split_token(located->text, m);
     } else {
       split_token(rest, m);
     }
