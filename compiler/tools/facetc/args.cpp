@@ -24,12 +24,14 @@ struct RawArgs {
   uint64_t max_variants = 65536;
 };
 
+// Repeatable options take one value per occurrence (allow_extra_args(false)),
+// so `-I dir shader.shader` leaves the shader as an input.
 void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("inputs", raw.inputs, ".shader files (or .facetpkg files with --dump)");
   app.add_option("-o", raw.output, "output file; '-' is standard output");
   app.add_option("--out-dir", raw.out_dir, "folder for the packages of several inputs");
-  app.add_option("-D", raw.defines, "define a macro: NAME or NAME=VALUE");
-  app.add_option("-I", raw.include_dirs, "add a folder to the #include search path");
+  app.add_option("-D", raw.defines, "define a macro: NAME or NAME=VALUE")->allow_extra_args(false);
+  app.add_option("-I", raw.include_dirs, "add a folder to the #include search path")->allow_extra_args(false);
   app.add_option("--opt", raw.opt, "optimisation (also -O, -Os, -O0)")
       ->check(CLI::IsMember({"performance", "size", "none"}));
   app.add_flag("-g", raw.debug_info, "keep debug information in the SPIR-V");
@@ -44,15 +46,15 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_flag("--list-variants", raw.list_variants, "print keyword sets, counts and every variant");
   app.add_option("--dump", raw.dump, "print as JSON: package (default), ast, ir or variants")
       ->check(CLI::IsMember({"package", "ast", "ir", "variants"}));
-  app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable");
+  app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable")->allow_extra_args(false);
   app.add_option("--stage", raw.stage, "vertex, fragment, geometry, hull or domain");
-  app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"");
+  app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"")->allow_extra_args(false);
   app.add_flag("--all-variants", raw.all_variants, "every variant (the default for packages)");
   app.add_flag("--strict-variants", raw.strict_variants, "a keyword set without its exact variant is an error");
   app.add_option("--max-variants", raw.max_variants, "refuse passes with more variants (0: no limit)");
   app.add_flag("-w", raw.no_warnings, "suppress every warning");
   app.add_flag("--Werror", raw.werror, "treat warnings as errors (also -Werror)");
-  app.add_option("--Wno", raw.disabled_groups, "switch a warning group off (also -Wno-<group>)");
+  app.add_option("--Wno", raw.disabled_groups, "switch a warning group off (also -Wno-<group>)")->allow_extra_args(false);
   app.add_option("--diagnostics-format", raw.diagnostics_format, "text (default) or json")
       ->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", raw.color, "auto (default), always or never")
