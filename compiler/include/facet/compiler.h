@@ -44,13 +44,18 @@ struct CompileOptions {
   bool strict_selection = false;
   // Refuse to compile more variants than this for one pass (0: no limit).
   uint64_t max_variants_per_pass = 65536;
+  // Worker threads (0: one per core). The package bytes do not depend on it.
+  unsigned jobs = 0;
 };
 
+// What a compile did, rung by rung of the dedupe ladder.
 struct CompileStats {
   uint64_t passes = 0;
-  uint64_t variants = 0;        // variants compiled
-  uint64_t stage_programs = 0;  // (variant, stage) pairs compiled
-  uint64_t unique_spirv = 0;    // distinct SPIR-V blobs stored
+  uint64_t variants = 0;            // variants in the package
+  uint64_t stage_programs = 0;      // (pass, stage, keywords the stage sees) programs needed
+  uint64_t unique_preprocessed = 0; // distinct preprocessed texts among them: compiled once each
+  uint64_t unique_spirv = 0;        // distinct SPIR-V blobs stored
+  unsigned jobs = 0;                // worker threads used
   double seconds = 0;
 };
 

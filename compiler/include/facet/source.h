@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -31,12 +32,23 @@ struct LineColumn {
 };
 
 // Owns every text that diagnostics may point into: .shader files, includes,
-// generated code. FileIds are indices, stable for the map's lifetime.
+// generated code. FileIds are indices, stable for the map's lifetime. Safe to
+// use from several threads at once (the parallel driver compiles variants
+// concurrently into one map): files are immutable once added, and references
+// returned by path()/text()/line_text() stay valid for the map's lifetime.
 class SourceMap {
  public:
-  FileId add_file(std::string path, std::string text);
+  SourceMap();
+  ~SourceMap();
+  SourceMap(SourceMap&&) noexcept;
+  SourceMap& operator=(SourceMap&&) noexcept;
 
-  size_t file_count() const { return files_.size(); }
+  FileId add_file(std::string path, std::string text);
+  // The file already added under `path`, else a new one: atomic, so two
+  // threads adding the same include get one FileId.
+  FileId add_file_once(std::string path, std::string text);
+
+  size_t file_count() const;
   const std::string& path(FileId id) const;
   const std::string& text(FileId id) const;
   std::optional<FileId> find(std::string_view path) const;
@@ -55,7 +67,10 @@ class SourceMap {
     std::string text;
     std::vector<uint32_t> line_starts;
   };
-  std::vector<File> files_;
+  const File* file(FileId id) const;  // nullptr when out of range
+
+  struct Storage;  // the files and the mutex guarding the list
+  std::unique_ptr<Storage> storage_;
 };
 
 }  // namespace facet

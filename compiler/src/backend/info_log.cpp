@@ -368,7 +368,7 @@ void report_info_log(std::string_view log, LogContext& context, Diagnostics& dia
 void add_included_files(const FileIncluder& includer, SourceMap& sources) {
   for (const IncludeRecord& record : includer.records()) {
     if (sources.find(record.path)) continue;
-    if (const std::string* text = includer.text_of(record.path)) sources.add_file(record.path, *text);
+    if (const std::string* text = includer.text_of(record.path)) sources.add_file_once(record.path, *text);
   }
 }
 

@@ -1,22 +1,44 @@
 // Compiler::compile: selected passes x variants x stages -> Package.
+//
+// The recipe: list the stage programs every variant needs (a program is a
+// pass, a stage and the keywords that stage sees), preprocess them all in
+// parallel, compile each distinct preprocessed text once in parallel, then
+// assemble the package sequentially in key order, so the bytes do not depend
+// on the thread count or on which thread finished first.
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <xxhash.h>
 
 #include <chrono>
 #include <map>
 #include <set>
+#include <thread>
+#include <tuple>
 
 #include "facet/compiler.h"
 
 namespace facet {
 namespace {
 
-// One compiled (stage, projected key): shared by every variant that differs
-// only in keywords the stage does not see.
+// The outcome of one stage program, shared by every variant that needs it.
 struct StageEntry {
   bool ok = false;
-  uint32_t blob = 0;
+  std::vector<uint32_t> spirv;
   StageReflection reflection;
+  std::vector<std::string> included_files;
   Diagnostics diags;
+};
+
+struct StageTask {
+  size_t pass = 0;  // index into the selected passes
+  Stage stage = Stage::vertex;
+  std::vector<std::string> keywords;  // the keywords the stage sees
+  uint64_t text_hash = 0;             // of the preprocessed text
+  bool preprocessed = false;
+  size_t compiled_by = SIZE_MAX;      // the task whose compile this one reuses (itself when first)
+  StageEntry entry;
 };
 
 std::string pass_label(const ir::Pass& pass, size_t index) {
@@ -46,6 +68,102 @@ void fill_shader_level(const ir::Shader& shader, const SelectedPass* first, pack
   }
 }
 
+unsigned worker_count(unsigned requested) {
+  if (requested > 0) return requested;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Runs body(i) for i in [0, n) on `jobs` threads.
+template <typename Body>
+void parallel_for_each(size_t n, unsigned jobs, const Body& body) {
+  if (jobs <= 1 || n <= 1) {
+    for (size_t i = 0; i < n; ++i) body(i);
+    return;
+  }
+  tbb::task_arena arena{int(jobs)};
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) body(i);
+    }, tbb::simple_partitioner());
+  });
+}
+
+// A hash of the tokens of a preprocessed text: `#line` markers and layout
+// dropped, since a keyword's #define shifts the prelude's line numbers without
+// changing the program. With debug info the lines reach the SPIR-V, so they count.
+uint64_t token_hash(const std::string& text, bool keep_lines) {
+  if (keep_lines) return XXH3_64bits(text.data(), text.size());
+  std::string tokens;
+  tokens.reserve(text.size());
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    std::string_view line(text.data() + pos, eol - pos);
+    pos = eol + 1;
+    size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos || line.substr(first).starts_with("#line")) continue;
+    bool in_space = false;
+    for (char c : line.substr(first)) {
+      bool space = c == ' ' || c == '\t' || c == '\r';
+      if (space && !in_space) tokens += ' ';
+      if (!space) tokens += c;
+      in_space = space;
+    }
+    tokens += '\n';
+  }
+  return XXH3_64bits(tokens.data(), tokens.size());
+}
+
+// The variants of each pass and, per (pass, stage, projected key), one task.
+struct Plan {
+  std::vector<std::vector<variants::VariantKey>> keys;  // per selected pass
+  std::vector<StageTask> tasks;
+  // (pass, stage, projected key) -> task index
+  std::map<std::tuple<size_t, Stage, variants::VariantKey>, size_t> task_of;
+};
+
+Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector<variants::VariantKey>> keys) {
+  Plan plan;
+  for (size_t p = 0; p < passes.size(); ++p) {
+    const ir::Program& program = *passes[p].ir->program;
+    for (const variants::VariantKey& key : keys[p]) {
+      for (int s = 0; s < kStageCount; ++s) {
+        Stage stage = Stage(s);
+        if (!program.has_stage(stage)) continue;
+        auto id = std::make_tuple(p, stage, variants::project(passes[p].keywords, key, stage));
+        if (plan.task_of.count(id)) continue;
+        plan.task_of.emplace(id, plan.tasks.size());
+        plan.tasks.push_back({.pass = p, .stage = stage,
+                              .keywords = variants::stage_keywords(passes[p].keywords, key, stage)});
+      }
+    }
+  }
+  plan.keys = std::move(keys);
+  return plan;
+}
+
+// Tasks whose preprocessed texts are equal compile to the same module: the
+// first of them compiles, the others reuse it. Returns how many compile.
+size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<StageTask>& tasks) {
+  std::map<std::tuple<Stage, ir::ProgramLanguage, std::string, uint64_t>, size_t> first;
+  size_t compiling = 0;
+  for (size_t i = 0; i < tasks.size(); ++i) {
+    StageTask& t = tasks[i];
+    const ir::Program& program = *passes[t.pass].ir->program;
+    if (!t.preprocessed) {
+      t.compiled_by = i;  // its preprocessing failed: compile it alone for the full diagnostics
+      ++compiling;
+      continue;
+    }
+    auto id = std::make_tuple(t.stage, program.language, program.entry_points[size_t(t.stage)], t.text_hash);
+    auto [it, inserted] = first.try_emplace(id, i);
+    t.compiled_by = it->second;
+    compiling += inserted;
+  }
+  return compiling;
+}
+
 }  // namespace
 
 Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
@@ -54,57 +172,78 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
 
+  bool failed = false;
+  std::vector<std::vector<variants::VariantKey>> keys;
+  for (const SelectedPass& sel : *passes) {
+    auto k = select_variants(sel, options, diags);
+    if (!k) failed = true;
+    keys.push_back(k ? std::move(*k) : std::vector<variants::VariantKey>{});
+  }
+  Plan plan = plan_tasks(*passes, std::move(keys));
+  const unsigned jobs = worker_count(options.jobs);
+
+  parallel_for_each(plan.tasks.size(), jobs, [&](size_t i) {
+    StageTask& t = plan.tasks[i];
+    const ir::Program& program = *(*passes)[t.pass].ir->program;
+    Diagnostics ignored;  // the compile reports the same problems with more context
+    auto text = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, true, sources, ignored);
+    if (!text) return;
+    t.preprocessed = true;
+    t.text_hash = token_hash(*text, options.backend.debug_info);
+  });
+  size_t compiling = assign_compilers(*passes, plan.tasks);
+
+  std::vector<size_t> to_compile;
+  for (size_t i = 0; i < plan.tasks.size(); ++i) {
+    if (plan.tasks[i].compiled_by == i) to_compile.push_back(i);
+  }
+  parallel_for_each(to_compile.size(), jobs, [&](size_t n) {
+    StageTask& t = plan.tasks[to_compile[n]];
+    const SelectedPass& sel = (*passes)[t.pass];
+    StageEntry& e = t.entry;
+    auto compiled = backend_.compile(shader, *sel.ir->program, t.stage, t.keywords, options.backend, sources, e.diags);
+    add_variant_context(e.diags, pass_label(*sel.ir, sel.pass), t.stage, t.keywords);
+    if (!compiled) return;
+    e.ok = true;
+    e.spirv = std::move(compiled->spirv);
+    e.reflection = std::move(compiled->reflection);
+    e.included_files = std::move(compiled->included_files);
+  });
+
   CompiledShader out;
   package::Package& pkg = out.package;
   fill_shader_level(shader, passes->empty() ? nullptr : &passes->front(), pkg);
   std::set<std::string> dependencies{sources.path(shader.file)};
-  bool failed = false;
+  std::map<size_t, uint32_t> blob_of;  // compiling task -> blob index
 
-  for (const SelectedPass& sel : *passes) {
-    auto keys = select_variants(sel, options, diags);
-    if (!keys) {
-      failed = true;
-      continue;
-    }
-    const ir::Program& program = *sel.ir->program;
+  for (size_t p = 0; p < passes->size(); ++p) {
+    const SelectedPass& sel = (*passes)[p];
     const ir::Pass& written = shader.subshaders[sel.subshader].passes[sel.pass];
-    std::string label = pass_label(*sel.ir, sel.pass);
     package::PackagePass pp{.name = sel.ir->name, .tags = sel.ir->tags, .state = written.state,
                             .keywords = sel.keywords};
     if (written.kind == ir::PassKind::use_pass) pp.state = sel.ir->state;
-
-    std::map<std::pair<Stage, variants::VariantKey>, StageEntry> cache;
     std::vector<Diagnostics> per_variant;
-    for (const variants::VariantKey& key : *keys) {
+    for (const variants::VariantKey& key : plan.keys[p]) {
       Diagnostics variant_diags;
       package::PackageVariant pv{.key = key, .keywords = variants::all_keywords(sel.keywords, key)};
       bool variant_ok = true;
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
-        if (!program.has_stage(stage)) continue;
-        auto cache_key = std::make_pair(stage, variants::project(sel.keywords, key, stage));
-        auto [it, inserted] = cache.try_emplace(cache_key);
-        StageEntry& entry = it->second;
-        if (inserted) {
-          auto stage_keywords = variants::stage_keywords(sel.keywords, key, stage);
-          auto compiled = backend_.compile(shader, program, stage, stage_keywords, options.backend, sources,
-                                           entry.diags);
-          add_variant_context(entry.diags, label, stage, stage_keywords);
-          ++out.stats.stage_programs;
-          if (compiled) {
-            entry.ok = true;
-            entry.blob = uint32_t(pkg.spirv_blobs.size());
-            pkg.spirv_blobs.push_back(std::move(compiled->spirv));
-            entry.reflection = std::move(compiled->reflection);
-            dependencies.insert(compiled->included_files.begin(), compiled->included_files.end());
-          }
-        }
-        variant_diags.append(entry.diags);
-        if (!entry.ok) {
+        if (!sel.ir->program->has_stage(stage)) continue;
+        size_t task = plan.task_of.at(std::make_tuple(p, stage, variants::project(sel.keywords, key, stage)));
+        size_t by = plan.tasks[task].compiled_by;
+        const StageEntry& e = plan.tasks[by].entry;
+        variant_diags.append(e.diags);
+        if (!e.ok) {
           variant_ok = false;
           continue;
         }
-        pv.stages.push_back({.stage = stage, .blob = entry.blob, .reflection = entry.reflection});
+        auto [it, inserted] = blob_of.try_emplace(by, uint32_t(pkg.spirv_blobs.size()));
+        if (inserted) {
+          pkg.spirv_blobs.push_back(e.spirv);
+          dependencies.insert(e.included_files.begin(), e.included_files.end());
+        }
+        pv.stages.push_back({.stage = stage, .blob = it->second, .reflection = e.reflection});
       }
       if (variant_ok) pp.variants.push_back(std::move(pv));
       per_variant.push_back(std::move(variant_diags));
@@ -114,8 +253,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     diags.append(merged);
     out.stats.variants += pp.variants.size();
     ++out.stats.passes;
-    std::sort(pp.variants.begin(), pp.variants.end(),
-              [](const auto& a, const auto& b) { return a.key < b.key; });
+    std::sort(pp.variants.begin(), pp.variants.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
     pkg.passes.push_back(std::move(pp));
   }
   if (failed) return failure("compile errors");
@@ -123,7 +261,10 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   package::deduplicate_blobs(pkg);
   Diagnostics invariant;
   if (!package::validate_package(pkg, invariant)) FACET_ICE("the driver built an invalid package");
+  out.stats.stage_programs = plan.tasks.size();
+  out.stats.unique_preprocessed = compiling;
   out.stats.unique_spirv = pkg.spirv_blobs.size();
+  out.stats.jobs = jobs;
   out.dependencies.assign(dependencies.begin(), dependencies.end());
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;

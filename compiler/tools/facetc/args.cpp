@@ -22,6 +22,7 @@ struct RawArgs {
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
   bool depfile_only = false, write_depfile = false, stats = false, version = false;
   uint64_t max_variants = 65536;
+  unsigned jobs = 0;
 };
 
 // Repeatable options take one value per occurrence (allow_extra_args(false)),
@@ -63,6 +64,7 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_flag("--MD", raw.write_depfile, "also write a depfile (also -MD)");
   app.add_option("--MF", raw.depfile, "the depfile's path (also -MF)");
   app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
+  app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
   app.add_flag("--version", raw.version, "print the version and exit");
 }
@@ -152,6 +154,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.strict_variants = raw.strict_variants;
   args.max_variants = raw.max_variants;
   args.stats = raw.stats;
+  args.jobs = raw.jobs;
   if (!raw.keywords.empty()) args.keywords = split_keywords(raw.keywords);
   if (!raw.stage.empty()) {
     args.stage = parse_stage(raw.stage);

@@ -48,6 +48,7 @@ struct FacetcArgs {
   std::string depfile;
   std::string dep_target;
   bool stats = false;
+  unsigned jobs = 0;  // -j N; 0: one per core
 };
 
 // What parse_args decided: run with these arguments, or print `text` and

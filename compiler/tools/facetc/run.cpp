@@ -66,9 +66,10 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
   const CompileStats& s = compiled->stats;
   Produced out{.bytes = std::string(bytes.begin(), bytes.end()), .output = package_output_path(args, input)};
-  out.stats = fmt::format("facetc: {}: {} passes, {} variants, {} stage programs compiled, {} unique SPIR-V, "
-                          "{} bytes, {:.2f} s\n",
-                          input, s.passes, s.variants, s.stage_programs, s.unique_spirv, bytes.size(), s.seconds);
+  out.stats = fmt::format("facetc: {}: {} passes, {} variants; programs {}, unique after preprocessing {} "
+                          "(compiled), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
+                          input, s.passes, s.variants, s.stage_programs, s.unique_preprocessed, s.unique_spirv,
+                          bytes.size(), s.seconds, s.jobs);
   if (args.mode == Mode::dump) out.bytes = package::package_to_json(compiled->package);
   return out;
 }

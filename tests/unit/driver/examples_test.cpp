@@ -2,7 +2,10 @@
 // spirv-val and cross-compiles to GLSL 450, ESSL 300 and MSL.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
 
 #include "facet/compiler.h"
 
@@ -67,17 +70,76 @@ TEST_P(DriverExamplesTest, EveryVariantValidatesAndCrossCompiles) {
 INSTANTIATE_TEST_SUITE_P(Examples, DriverExamplesTest, testing::ValuesIn(example_shaders()),
                          [](const auto& info) { return fs::path(info.param).stem().string(); });
 
-TEST(DriverCompileTest, PackageBytesDoNotDependOnTheRun) {
-  auto build = [] {
-    Compiler compiler;
-    SourceMap sources;
-    Diagnostics diags;
-    auto shader = compiler.load(std::string(FACET_SOURCE_DIR) + "/examples/shaders/PhongMultiLight.shader", sources,
-                                diags);
-    auto compiled = compiler.compile(*shader, {}, sources, diags);
-    return package::write_package(compiled->package);
-  };
-  EXPECT_EQ(build(), build());
+struct Built {
+  std::vector<uint8_t> bytes;
+  CompileStats stats;
+};
+
+Built build(const std::string& path, unsigned jobs) {
+  Compiler compiler;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = compiler.load(path, sources, diags);
+  EXPECT_TRUE(shader) << render_text(diags, sources);
+  if (!shader) return {};
+  auto compiled = compiler.compile(*shader, {.jobs = jobs}, sources, diags);
+  EXPECT_TRUE(compiled) << render_text(diags, sources);
+  if (!compiled) return {};
+  return {package::write_package(compiled->package), compiled->stats};
+}
+
+std::string example(const char* name) { return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name; }
+
+TEST(DriverCompileTest, PackageBytesDoNotDependOnTheRunOrTheThreadCount) {
+  Built one = build(example("Keywords.shader"), 1);
+  EXPECT_EQ(one.stats.jobs, 1u);
+  EXPECT_EQ(one.bytes, build(example("Keywords.shader"), 1).bytes);
+  Built two = build(example("Keywords.shader"), 2);
+  EXPECT_EQ(two.stats.jobs, 2u);
+  EXPECT_EQ(one.bytes, two.bytes);
+  EXPECT_EQ(one.bytes, build(example("Keywords.shader"), 4).bytes);
+}
+
+// Dedupe ladder: programs needed -> distinct preprocessed tokens (compiled
+// once each) -> distinct SPIR-V (stored once).
+TEST(DriverCompileTest, ProgramsWithEqualTokensCompileOnce) {
+  // ForwardBase: 4 fwdbase variants x 2 stages; ForwardAdd: 5 lights x 2.
+  // The light keywords change no token of these programs but the attenuation
+  // ones, so most collapse before glslang ever runs.
+  Built phong = build(example("PhongMultiLight.shader"), 2);
+  EXPECT_EQ(phong.stats.stage_programs, 18u);
+  EXPECT_EQ(phong.stats.unique_preprocessed, 8u);
+  EXPECT_EQ(phong.stats.unique_spirv, 6u);
+
+  fs::path dir = fs::temp_directory_path() / ("facet_dedupe_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "unused.shader") << R"(Shader "T/Unused" {
+  SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    #pragma multi_compile _ NEVER_TESTED
+    #pragma multi_compile _ RED
+    float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+    float4 frag() : SV_Target {
+    #ifdef RED
+      return float4(1, 0, 0, 1);
+    #else
+      return 1;
+    #endif
+    }
+    ENDCG
+  } }
+})";
+  Built unused = build((dir / "unused.shader").string(), 2);
+  fs::remove_all(dir);
+  // 4 variants x 2 stages = 8 programs; NEVER_TESTED changes nothing and RED
+  // only the fragment function's tokens... which every stage's text holds, so
+  // 2 texts per stage remain: 4 compiles. The vertex SPIR-V is one module.
+  EXPECT_EQ(unused.stats.variants, 4u);
+  EXPECT_EQ(unused.stats.stage_programs, 8u);
+  EXPECT_EQ(unused.stats.unique_preprocessed, 4u);
+  EXPECT_EQ(unused.stats.unique_spirv, 3u);
 }
 
 }  // namespace
