@@ -160,6 +160,26 @@ Result<Selection> select_variant(const KeywordSpace& space, const KeywordList& m
                                  const KeywordList& global_keywords, const SelectOptions& options,
                                  Diagnostics& diags);
 
+// ---- keywords implied by material property values ---------------------------
+
+// A property value a material sets (a float: toggles and enums are floats).
+struct PropertyValue {
+  std::string name;
+  float value = 0;
+};
+
+// The keywords a material's property values enable, as Unity's material
+// inspector sets them, in property order:
+//   [Toggle(KW)]      KW when the value is not 0; [Toggle] alone: NAME_ON
+//   [ToggleOff(KW)]   KW when the value is 0;     [ToggleOff] alone: NAME_OFF
+//   [KeywordEnum(A, B C, ...)]  NAME_A, NAME_B_C, ... for the entry the value
+//                     selects (truncated and clamped to the entries)
+// where NAME is the property name upper-cased and entries are upper-cased
+// with spaces as '_'. Properties absent from `values` use their defaults;
+// attribute names compare case-insensitively.
+KeywordList keywords_from_properties(const std::vector<ir::Property>& properties,
+                                     const std::vector<PropertyValue>& values = {});
+
 // ---- text -----------------------------------------------------------------
 
 struct DumpOptions {

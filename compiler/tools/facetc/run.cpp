@@ -47,6 +47,9 @@ Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compi
   auto passes = compiler.select_passes(shader, compile_options(args, false), diags);
   FACET_TRY(passes);
   std::string out = fmt::format("shader '{}'\n", shader.name);
+  variants::KeywordList implied = variants::keywords_from_properties(shader.properties);
+  out += fmt::format("keywords the property defaults enable (Toggle, KeywordEnum): {}\n",
+                     implied.empty() ? "(none)" : fmt::format("{}", fmt::join(implied, " ")));
   for (const SelectedPass& pass : *passes) {
     variants::DumpOptions options{.stages = 0, .list_variants = list};
     for (int s = 0; s < kStageCount; ++s) {
