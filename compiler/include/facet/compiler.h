@@ -46,6 +46,8 @@ struct CompileOptions {
   uint64_t max_variants_per_pass = 65536;
   // Worker threads (0: one per core). The package bytes do not depend on it.
   unsigned jobs = 0;
+  // The compile cache folder (facet/cache.h); empty: no cache.
+  std::string cache_dir;
 };
 
 // What a compile did, rung by rung of the dedupe ladder.
@@ -55,6 +57,9 @@ struct CompileStats {
   uint64_t stage_programs = 0;      // (pass, stage, keywords the stage sees) programs needed
   uint64_t unique_preprocessed = 0; // distinct preprocessed texts among them: compiled once each
   uint64_t unique_spirv = 0;        // distinct SPIR-V blobs stored
+  uint64_t cache_hits = 0;          // unique programs served by the cache
+  uint64_t cache_corrupt = 0;       // cache entries that failed their checks (recompiled)
+  uint64_t compiled = 0;            // unique programs glslang compiled
   unsigned jobs = 0;                // worker threads used
   double seconds = 0;
 };

@@ -11,12 +11,15 @@
 #include <tbb/task_arena.h>
 #include <xxhash.h>
 
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <set>
 #include <thread>
 #include <tuple>
 
+#include "driver/reachable.h"
+#include "facet/cache.h"
 #include "facet/compiler.h"
 
 namespace facet {
@@ -35,7 +38,8 @@ struct StageTask {
   size_t pass = 0;  // index into the selected passes
   Stage stage = Stage::vertex;
   std::vector<std::string> keywords;  // the keywords the stage sees
-  uint64_t text_hash = 0;             // of the preprocessed text
+  uint64_t text_hash = 0;             // of the preprocessed tokens
+  std::string cache_key;              // hex; set when preprocessing succeeded
   bool preprocessed = false;
   size_t compiled_by = SIZE_MAX;      // the task whose compile this one reuses (itself when first)
   StageEntry entry;
@@ -88,11 +92,12 @@ void parallel_for_each(size_t n, unsigned jobs, const Body& body) {
   });
 }
 
-// A hash of the tokens of a preprocessed text: `#line` markers and layout
-// dropped, since a keyword's #define shifts the prelude's line numbers without
-// changing the program. With debug info the lines reach the SPIR-V, so they count.
-uint64_t token_hash(const std::string& text, bool keep_lines) {
-  if (keep_lines) return XXH3_64bits(text.data(), text.size());
+// The tokens of a preprocessed text: layout dropped and the line numbers of
+// `#line` markers too (a keyword's #define shifts the prelude's lines without
+// changing the program), but not their file names. With debug info the lines
+// reach the SPIR-V, so the text is kept whole.
+std::string token_text(const std::string& text, bool keep_lines) {
+  if (keep_lines) return text;
   std::string tokens;
   tokens.reserve(text.size());
   size_t pos = 0;
@@ -102,9 +107,17 @@ uint64_t token_hash(const std::string& text, bool keep_lines) {
     std::string_view line(text.data() + pos, eol - pos);
     pos = eol + 1;
     size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos || line.substr(first).starts_with("#line")) continue;
+    if (first == std::string_view::npos) continue;
+    line.remove_prefix(first);
+    if (line.starts_with("#line")) {
+      size_t quote = line.find('"');
+      tokens += "#line ";
+      if (quote != std::string_view::npos) tokens += line.substr(quote);
+      tokens += '\n';
+      continue;
+    }
     bool in_space = false;
-    for (char c : line.substr(first)) {
+    for (char c : line) {
       bool space = c == ' ' || c == '\t' || c == '\r';
       if (space && !in_space) tokens += ' ';
       if (!space) tokens += c;
@@ -112,7 +125,29 @@ uint64_t token_hash(const std::string& text, bool keep_lines) {
     }
     tokens += '\n';
   }
-  return XXH3_64bits(tokens.data(), tokens.size());
+  return tokens;
+}
+
+// What the compiled module depends on besides its tokens.
+std::string key_context(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                        const backend::BackendOptions& options) {
+  std::string context = fmt::format("{}|opt {}|target {}|g {}|stage {}|lang {}|entry {}|", cache::build_id(),
+                                    int(options.opt), int(options.target), options.debug_info, int(stage),
+                                    int(program.language), program.entry_points[size_t(stage)]);
+  for (const ir::Property& p : shader.properties) {  // reflection binds properties to uniforms
+    context += fmt::format("{}:{}:{};", p.name, int(p.type), p.default_texture);
+  }
+  return context;
+}
+
+std::string hex_key(const std::string& context, const std::string& tokens) {
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_128bits_reset(state);
+  XXH3_128bits_update(state, context.data(), context.size());
+  XXH3_128bits_update(state, tokens.data(), tokens.size());
+  XXH128_hash_t h = XXH3_128bits_digest(state);
+  XXH3_freeState(state);
+  return fmt::format("{:016x}{:016x}", h.high64, h.low64);
 }
 
 // The variants of each pass and, per (pass, stage, projected key), one task.
@@ -189,7 +224,15 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     auto text = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, true, sources, ignored);
     if (!text) return;
     t.preprocessed = true;
-    t.text_hash = token_hash(*text, options.backend.debug_info);
+    std::string tokens = token_text(*text, options.backend.debug_info);
+    // Stage relevance: only what this stage's entry point reaches counts
+    // (GLSL programs are already split per stage by #ifdef VERTEX/FRAGMENT;
+    // with -g the module embeds the whole source, so all of it counts).
+    if (program.language != ir::ProgramLanguage::glsl && !options.backend.debug_info) {
+      tokens = reachable_text(tokens, program.entry_points[size_t(t.stage)]);
+    }
+    t.text_hash = XXH3_64bits(tokens.data(), tokens.size());
+    t.cache_key = hex_key(key_context(shader, program, t.stage, options.backend), tokens);
   });
   size_t compiling = assign_compilers(*passes, plan.tasks);
 
@@ -197,10 +240,25 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   for (size_t i = 0; i < plan.tasks.size(); ++i) {
     if (plan.tasks[i].compiled_by == i) to_compile.push_back(i);
   }
+  std::optional<cache::LocalCache> store;
+  if (!options.cache_dir.empty()) store.emplace(options.cache_dir);
+  std::atomic<uint64_t> hits{0}, corrupt{0};
   parallel_for_each(to_compile.size(), jobs, [&](size_t n) {
     StageTask& t = plan.tasks[to_compile[n]];
     const SelectedPass& sel = (*passes)[t.pass];
     StageEntry& e = t.entry;
+    if (store && !t.cache_key.empty()) {
+      cache::LoadResult cached = store->load(t.cache_key);
+      corrupt += cached.corrupt;
+      if (cached.entry) {
+        ++hits;
+        e.ok = true;
+        e.spirv = std::move(cached.entry->spirv);
+        e.reflection = std::move(cached.entry->reflection);
+        e.included_files = std::move(cached.entry->included_files);
+        return;
+      }
+    }
     auto compiled = backend_.compile(shader, *sel.ir->program, t.stage, t.keywords, options.backend, sources, e.diags);
     add_variant_context(e.diags, pass_label(*sel.ir, sel.pass), t.stage, t.keywords);
     if (!compiled) return;
@@ -208,6 +266,10 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     e.spirv = std::move(compiled->spirv);
     e.reflection = std::move(compiled->reflection);
     e.included_files = std::move(compiled->included_files);
+    // Only clean compiles are stored: a hit replays no diagnostics.
+    if (store && !t.cache_key.empty() && e.diags.size() == 0) {
+      (void)store->store(t.cache_key, {e.spirv, e.reflection, e.included_files});
+    }
   });
 
   CompiledShader out;
@@ -263,6 +325,9 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   if (!package::validate_package(pkg, invariant)) FACET_ICE("the driver built an invalid package");
   out.stats.stage_programs = plan.tasks.size();
   out.stats.unique_preprocessed = compiling;
+  out.stats.cache_hits = hits;
+  out.stats.cache_corrupt = corrupt;
+  out.stats.compiled = to_compile.size() - hits;
   out.stats.unique_spirv = pkg.spirv_blobs.size();
   out.stats.jobs = jobs;
   out.dependencies.assign(dependencies.begin(), dependencies.end());

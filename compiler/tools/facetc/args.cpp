@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 
@@ -23,6 +24,8 @@ struct RawArgs {
   bool depfile_only = false, write_depfile = false, stats = false, version = false;
   uint64_t max_variants = 65536;
   unsigned jobs = 0;
+  std::string cache_dir;
+  bool no_cache = false;
 };
 
 // Repeatable options take one value per occurrence (allow_extra_args(false)),
@@ -65,6 +68,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--MF", raw.depfile, "the depfile's path (also -MF)");
   app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
   app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
+  app.add_option("--cache-dir", raw.cache_dir, "the compile cache folder (default: $FACET_CACHE_DIR, else none)");
+  app.add_flag("--no-cache", raw.no_cache, "neither read nor write the compile cache");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
   app.add_flag("--version", raw.version, "print the version and exit");
 }
@@ -155,6 +160,10 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.max_variants = raw.max_variants;
   args.stats = raw.stats;
   args.jobs = raw.jobs;
+  if (!raw.no_cache) {
+    const char* env = std::getenv("FACET_CACHE_DIR");
+    args.cache_dir = !raw.cache_dir.empty() ? raw.cache_dir : env ? env : "";
+  }
   if (!raw.keywords.empty()) args.keywords = split_keywords(raw.keywords);
   if (!raw.stage.empty()) {
     args.stage = parse_stage(raw.stage);

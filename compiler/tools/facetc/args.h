@@ -49,6 +49,7 @@ struct FacetcArgs {
   std::string dep_target;
   bool stats = false;
   unsigned jobs = 0;  // -j N; 0: one per core
+  std::string cache_dir;  // --cache-dir, else $FACET_CACHE_DIR; "" (or --no-cache): none
 };
 
 // What parse_args decided: run with these arguments, or print `text` and

@@ -70,9 +70,13 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   const CompileStats& s = compiled->stats;
   Produced out{.bytes = std::string(bytes.begin(), bytes.end()), .output = package_output_path(args, input)};
   out.stats = fmt::format("facetc: {}: {} passes, {} variants; programs {}, unique after preprocessing {} "
-                          "(compiled), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
+                          "(compiled once each), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
                           input, s.passes, s.variants, s.stage_programs, s.unique_preprocessed, s.unique_spirv,
                           bytes.size(), s.seconds, s.jobs);
+  if (!args.cache_dir.empty()) {
+    out.stats += fmt::format("facetc: {}: cache: local hits {} / compiled {}{}\n", input, s.cache_hits, s.compiled,
+                             s.cache_corrupt ? fmt::format(" ({} corrupt entries recompiled)", s.cache_corrupt) : "");
+  }
   if (args.mode == Mode::dump) out.bytes = package::package_to_json(compiled->package);
   return out;
 }

@@ -116,7 +116,7 @@ std::string text_document(const FacetcArgs& args, const std::vector<Unit>& units
 CompileOptions compile_options(const FacetcArgs& args, bool one_variant_by_default) {
   CompileOptions options{.backend = args.backend, .passes = args.passes, .strict_selection = args.strict_variants,
                          .max_variants_per_pass = args.max_variants,
-                         .jobs = args.jobs};
+                         .jobs = args.jobs, .cache_dir = args.cache_dir};
   if (args.keywords) {
     options.keywords = *args.keywords;
   } else if (one_variant_by_default && !args.all_variants) {

@@ -1,0 +1,66 @@
+// A content-addressed store of compiled stage programs, so that a rebuild
+// compiles only what changed.
+//
+// The key of a program hashes everything its SPIR-V and reflection depend
+// on: facet's build id, the back-end options, stage, language and entry
+// point, the shader's properties, and the program's preprocessed tokens
+// (which hold every transitively included file and the variant's keywords).
+// A local directory backend stores one file per key, written to a temporary
+// file and renamed, so concurrent builders and a build killed mid-write
+// never expose a partial entry; each entry carries a checksum, and an entry
+// that fails it is reported as corrupt and recompiled, never used.
+//
+//   cache::LocalCache store("/tmp/facet-cache");
+//   if (auto hit = store.load(key)) use(*hit->entry);
+//   else store.store(key, compiled);
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "facet/reflection.h"
+
+namespace facet::cache {
+
+// What one compiled stage program leaves behind.
+struct CacheEntry {
+  std::vector<uint32_t> spirv;
+  StageReflection reflection;
+  std::vector<std::string> included_files;  // sorted
+};
+
+// facet's build id: a hash of the compiler's own sources, made at build time.
+std::string_view build_id();
+
+// Bytes of an entry (format in docs/cache.md), with a trailing checksum.
+std::string encode_entry(const CacheEntry& entry);
+// nullopt when the bytes are truncated, corrupt or of another format version.
+std::optional<CacheEntry> decode_entry(std::string_view bytes);
+
+struct LoadResult {
+  std::optional<CacheEntry> entry;  // set on a hit
+  bool corrupt = false;             // an entry existed but failed its checks
+};
+
+class LocalCache {
+ public:
+  explicit LocalCache(std::string dir) : dir_(std::move(dir)) {}
+  const std::string& dir() const { return dir_; }
+
+  // A missing key is a miss; an unreadable or corrupt entry is a miss with
+  // `corrupt` set (the next store replaces it).
+  LoadResult load(const std::string& key) const;
+  // Writes atomically (temporary file + rename). false when the folder is
+  // not writable; a cache that cannot store never fails a build.
+  bool store(const std::string& key, const CacheEntry& entry) const;
+  // The entry file of `key` (for tests and tools).
+  std::string path_of(const std::string& key) const;
+
+ private:
+  std::string dir_;
+};
+
+}  // namespace facet::cache

@@ -1,0 +1,75 @@
+// The local directory backend: <dir>/<first two key chars>/<key>.
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "facet/cache.h"
+
+namespace facet::cache {
+namespace fs = std::filesystem;
+
+namespace {
+
+// A key is lower-case hex; anything else could escape the folder.
+bool valid_key(const std::string& key) {
+  if (key.size() < 8 || key.size() > 128) return false;
+  for (char c : key) {
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string LocalCache::path_of(const std::string& key) const {
+  return (fs::path(dir_) / key.substr(0, 2) / key).string();
+}
+
+LoadResult LocalCache::load(const std::string& key) const {
+  if (!valid_key(key)) return {};
+  std::ifstream in(path_of(key), std::ios::binary);
+  if (!in) return {};
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  LoadResult result;
+  result.entry = decode_entry(bytes.str());
+  result.corrupt = !result.entry;
+  return result;
+}
+
+bool LocalCache::store(const std::string& key, const CacheEntry& entry) const {
+  if (!valid_key(key)) return false;
+  std::error_code ec;
+  fs::path target = path_of(key);
+  fs::create_directories(target.parent_path(), ec);
+  if (ec) return false;
+  // Unique per process, thread and call: concurrent writers never share a temp file.
+  static std::atomic<uint64_t> counter{0};
+  fs::path temp = target;
+  temp += ".tmp." + std::to_string(::getpid()) + "." +
+          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) + "." +
+          std::to_string(counter++);
+  std::string bytes = encode_entry(entry);
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.flush();
+    if (!out) {
+      out.close();
+      fs::remove(temp, ec);
+      return false;
+    }
+  }
+  fs::rename(temp, target, ec);  // atomic: readers see the old entry or the new one
+  if (ec) {
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace facet::cache

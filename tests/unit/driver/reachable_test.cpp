@@ -1,0 +1,56 @@
+// reachable_text: what an entry point reaches of a preprocessed program.
+#include <gtest/gtest.h>
+
+#include "driver/reachable.h"
+
+namespace facet {
+namespace {
+
+const std::string kProgram =
+    "#line \"<prelude>\"\n"
+    "struct v2f { float4 pos : SV_POSITION; };\n"
+    "cbuffer C : register(b0) { float4 _A; }\n"
+    "float4 _Color;\n"
+    "float helper() { return 1; }\n"
+    "float only_frag() { return 2; }\n"
+    "static float init = helper();\n"
+    "v2f vert(float4 v : POSITION) { v2f o; o.pos = v * helper(); return o; }\n"
+    "[earlydepthstencil] float4 frag(v2f i) : SV_Target { return _Color * only_frag(); }\n";
+
+TEST(DriverReachableTest, KeepsDeclarationsAndReachedFunctionsOnly) {
+  std::string vert = reachable_text(kProgram, "vert");
+  EXPECT_NE(vert.find("struct v2f"), std::string::npos);
+  EXPECT_NE(vert.find("cbuffer C"), std::string::npos);
+  EXPECT_NE(vert.find("float4 _Color;"), std::string::npos);
+  EXPECT_NE(vert.find("float helper()"), std::string::npos);
+  EXPECT_NE(vert.find("v2f vert("), std::string::npos);
+  EXPECT_EQ(vert.find("only_frag"), std::string::npos);
+  EXPECT_EQ(vert.find("SV_Target"), std::string::npos);
+
+  std::string frag = reachable_text(kProgram, "frag");
+  EXPECT_NE(frag.find("float only_frag()"), std::string::npos);
+  EXPECT_NE(frag.find("[earlydepthstencil] float4 frag("), std::string::npos);
+  EXPECT_NE(frag.find("float helper()"), std::string::npos) << "a static initialiser calls it";
+  EXPECT_EQ(frag.find("v2f vert("), std::string::npos);
+}
+
+TEST(DriverReachableTest, ChangesOutsideTheReachedPartDoNotMatter) {
+  std::string other = kProgram;
+  other.replace(other.find("return 2;"), 9, "return 3 + _Color.x;");
+  EXPECT_EQ(reachable_text(kProgram, "vert"), reachable_text(other, "vert"));
+  EXPECT_NE(reachable_text(kProgram, "frag"), reachable_text(other, "frag"));
+}
+
+TEST(DriverReachableTest, StringLiteralsReferenceFunctions) {
+  std::string hull = "float4 constants() { return 0; }\n"
+                     "[patchconstantfunc(\"constants\")] float4 hs(uint id : SV_OutputControlPointID) { return 1; }\n";
+  EXPECT_NE(reachable_text(hull, "hs").find("constants() {"), std::string::npos);
+}
+
+TEST(DriverReachableTest, UnbalancedOrUnknownEntryKeepsEverything) {
+  EXPECT_EQ(reachable_text("float f() { return 1; ", "f"), "float f() { return 1; ");
+  EXPECT_EQ(reachable_text(kProgram, "nope"), kProgram);
+}
+
+}  // namespace
+}  // namespace facet
