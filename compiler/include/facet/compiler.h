@@ -64,10 +64,24 @@ struct CompileStats {
   double seconds = 0;
 };
 
+// One stage program the variants needed (a pass, a stage and the keywords
+// that stage sees), and what became of it. For reports and tools.
+struct ProgramRecord {
+  uint32_t pass = 0;  // index into Package::passes
+  Stage stage = Stage::vertex;
+  std::vector<std::string> keywords;  // the keywords the stage sees, set order
+  uint64_t token_hash = 0;            // of its relevant preprocessed tokens; 0 when preprocessing failed
+  bool compiled = false;              // first of its tokens: glslang (or the cache) produced it
+  bool cache_hit = false;
+  double seconds = 0;                 // compile (or cache lookup) time, when `compiled`
+  uint32_t blob = UINT32_MAX;         // its SPIR-V in Package::spirv_blobs
+};
+
 struct CompiledShader {
   package::Package package;
   std::vector<std::string> dependencies;  // the .shader and every included file, sorted
   CompileStats stats;
+  std::vector<ProgramRecord> programs;    // in pass, then first-use order
 };
 
 // A pass chosen for compilation: where it is in the IR and its keyword space.

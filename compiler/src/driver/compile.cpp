@@ -28,6 +28,8 @@ namespace {
 // The outcome of one stage program, shared by every variant that needs it.
 struct StageEntry {
   bool ok = false;
+  bool cache_hit = false;
+  double seconds = 0;
   std::vector<uint32_t> spirv;
   StageReflection reflection;
   std::vector<std::string> included_files;
@@ -199,6 +201,30 @@ size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<Sta
   return compiling;
 }
 
+// The plan's tasks as the caller sees them, with blobs of the final package.
+std::vector<ProgramRecord> program_records(const std::vector<StageTask>& tasks, const package::Package& pkg) {
+  std::map<uint64_t, std::vector<uint32_t>> blobs_by_hash;
+  for (uint32_t b = 0; b < pkg.spirv_blobs.size(); ++b) {
+    const auto& words = pkg.spirv_blobs[b];
+    blobs_by_hash[XXH3_64bits(words.data(), words.size() * 4)].push_back(b);
+  }
+  std::vector<ProgramRecord> out;
+  for (size_t i = 0; i < tasks.size(); ++i) {
+    const StageTask& t = tasks[i];
+    const StageEntry& e = tasks[t.compiled_by].entry;
+    ProgramRecord r{.pass = uint32_t(t.pass), .stage = t.stage, .keywords = t.keywords,
+                    .token_hash = t.preprocessed ? t.text_hash : 0, .compiled = t.compiled_by == i,
+                    .cache_hit = t.compiled_by == i && e.cache_hit, .seconds = t.compiled_by == i ? e.seconds : 0};
+    if (e.ok) {
+      for (uint32_t b : blobs_by_hash[XXH3_64bits(e.spirv.data(), e.spirv.size() * 4)]) {
+        if (pkg.spirv_blobs[b] == e.spirv) r.blob = b;
+      }
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 }  // namespace
 
 Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
@@ -247,12 +273,15 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     StageTask& t = plan.tasks[to_compile[n]];
     const SelectedPass& sel = (*passes)[t.pass];
     StageEntry& e = t.entry;
+    auto begin = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     if (store && !t.cache_key.empty()) {
       cache::LoadResult cached = store->load(t.cache_key);
       corrupt += cached.corrupt;
       if (cached.entry) {
         ++hits;
-        e.ok = true;
+        e.ok = e.cache_hit = true;
+        e.seconds = elapsed();
         e.spirv = std::move(cached.entry->spirv);
         e.reflection = std::move(cached.entry->reflection);
         e.included_files = std::move(cached.entry->included_files);
@@ -261,6 +290,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     }
     auto compiled = backend_.compile(shader, *sel.ir->program, t.stage, t.keywords, options.backend, sources, e.diags);
     add_variant_context(e.diags, pass_label(*sel.ir, sel.pass), t.stage, t.keywords);
+    e.seconds = elapsed();
     if (!compiled) return;
     e.ok = true;
     e.spirv = std::move(compiled->spirv);
@@ -331,6 +361,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.unique_spirv = pkg.spirv_blobs.size();
   out.stats.jobs = jobs;
   out.dependencies.assign(dependencies.begin(), dependencies.end());
+  out.programs = program_records(plan.tasks, pkg);
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;
 }

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <utility>
 
+#include "common/suggest.h"
 #include "facet/variants.h"
 #include "variants/shortcuts.h"
 
@@ -79,27 +80,12 @@ std::vector<std::string> all_directive_spellings() {
   return names;
 }
 
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
-}
-
 // The closest candidate within two edits, for a "did you mean" note.
 std::optional<std::string> suggest(std::string_view name, const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
   size_t best_distance = 3;
   for (const std::string& candidate : candidates) {
-    size_t distance = edit_distance(name, candidate);
+    size_t distance = facet::edit_distance(name, candidate);
     if (distance < best_distance) {
       best = candidate;
       best_distance = distance;

@@ -17,7 +17,8 @@ namespace {
 // Everything CLI11 binds to before it is checked and turned into FacetcArgs.
 struct RawArgs {
   std::vector<std::string> inputs, defines, include_dirs, passes, keywords, disabled_groups;
-  std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage;
+  std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage, report;
+  std::vector<std::string> material_files;
   std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
   bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
@@ -50,6 +51,10 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_flag("--list-variants", raw.list_variants, "print keyword sets, counts and every variant");
   app.add_option("--dump", raw.dump, "print as JSON: package (default), ast, ir or variants")
       ->check(CLI::IsMember({"package", "ast", "ir", "variants"}));
+  app.add_option("--report", raw.report, "the variant report of every input: text (default), json or html")
+      ->check(CLI::IsMember({"text", "json", "html"}));
+  app.add_option("--materials", raw.material_files, "a material manifest (JSON) for the report's material rung")
+      ->allow_extra_args(false);
   app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable")->allow_extra_args(false);
   app.add_option("--stage", raw.stage, "vertex, fragment, geometry, hull or domain");
   app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"")->allow_extra_args(false);
@@ -104,7 +109,8 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
   std::vector<std::pair<bool, Mode>> modes = {
       {raw.preprocess, Mode::preprocess},       {raw.assemble || !raw.emit.empty(), Mode::emit},
       {raw.reflect, Mode::reflect},             {raw.list_variants, Mode::list_variants},
-      {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only}};
+      {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only},
+      {!raw.report.empty(), Mode::report}};
   int chosen = 0;
   for (auto [on, mode] : modes) {
     if (on) {
@@ -112,7 +118,9 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       ++chosen;
     }
   }
-  if (chosen > 1) return "-E, -S/--emit, --reflect, --list-variants, --dump and -M exclude each other";
+  if (chosen > 1) return "-E, -S/--emit, --reflect, --list-variants, --dump, --report and -M exclude each other";
+  args.report = raw.report == "json" ? ReportFormat::json : raw.report == "html" ? ReportFormat::html
+                                                                                   : ReportFormat::text;
   static const std::map<std::string, EmitKind> emits = {{"", EmitKind::spirv_asm},
       {"spirv-asm", EmitKind::spirv_asm}, {"spirv", EmitKind::spirv}, {"glsl", EmitKind::glsl},
       {"essl", EmitKind::essl}, {"msl", EmitKind::msl}};
@@ -125,10 +133,14 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
 
 std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
   if (args.inputs.empty()) return "no input files";
-  if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1) {
+  if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report) {
     return "-o names one output file; give one input (or --out-dir for the packages of several)";
   }
   if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
+  if (!raw.material_files.empty() && args.mode != Mode::report) return "--materials goes with --report";
+  if (args.mode == Mode::report && (raw.write_depfile || args.keywords)) {
+    return "--report covers every variant; -MD and --keywords do not apply";
+  }
   if (!args.output.empty() && !args.out_dir.empty()) return "-o and --out-dir exclude each other";
   if (args.mode == Mode::emit && args.emit == EmitKind::spirv && args.output.empty()) {
     return "--emit=spirv writes binary SPIR-V; name the file with -o (or '-o -' for standard output)";
@@ -159,6 +171,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.strict_variants = raw.strict_variants;
   args.max_variants = raw.max_variants;
   args.stats = raw.stats;
+  args.material_files = raw.material_files;
   args.jobs = raw.jobs;
   if (!raw.no_cache) {
     const char* env = std::getenv("FACET_CACHE_DIR");
@@ -204,7 +217,8 @@ std::vector<std::string> normalize_args(const std::vector<std::string>& argv) {
   static const std::map<std::string, std::string> spelled = {
       {"-O", "--opt=performance"}, {"-Os", "--opt=size"}, {"-O0", "--opt=none"}, {"-O1", "--opt=performance"},
       {"-O2", "--opt=performance"}, {"-O3", "--opt=performance"}, {"-Werror", "--Werror"},
-      {"-MD", "--MD"}, {"-MF", "--MF"}, {"-MT", "--MT"}, {"--dump", "--dump=package"}};
+      {"-MD", "--MD"}, {"-MF", "--MF"}, {"-MT", "--MT"}, {"--dump", "--dump=package"},
+      {"--report", "--report=text"}};
   std::vector<std::string> out;
   bool after_double_dash = false;
   for (const std::string& a : argv) {

@@ -20,7 +20,10 @@ enum class Mode {
   list_variants,  // --list-variants: keyword sets, counts and every variant
   dump,           // --dump[=package|ast|ir|variants]
   depfile_only,   // -M: the make rule of every file the build reads, nothing else
+  report,         // --report[=text|json|html]: the variant report of every input (docs/reports.md)
 };
+
+enum class ReportFormat { text, json, html };
 
 enum class EmitKind { spirv_asm, spirv, glsl, essl, msl };
 enum class DumpKind { package, ast, ir, variants };
@@ -30,6 +33,8 @@ struct FacetcArgs {
   Mode mode = Mode::package;
   EmitKind emit = EmitKind::spirv_asm;
   DumpKind dump = DumpKind::package;
+  ReportFormat report = ReportFormat::text;
+  std::vector<std::string> material_files;  // --materials: material manifests (docs/reports.md)
   std::vector<std::string> inputs;
   std::string output;      // -o; "-" is standard output; "" = the mode's default
   std::string out_dir;     // --out-dir

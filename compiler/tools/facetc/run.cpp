@@ -13,6 +13,7 @@
 #include "facet/package.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "report_mode.h"
 #include "units.h"
 
 namespace facet::tools {
@@ -123,6 +124,7 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
       FACET_TRY(text);
       return Produced{.bytes = std::move(*text), .output = args.output};
     }
+    case Mode::report:  // run_report handles it
     case Mode::preprocess:
     case Mode::emit:
     case Mode::reflect: {
@@ -208,6 +210,11 @@ int run_facetc(const FacetcArgs& args, Console& console) {
   Compiler compiler;
   nlohmann::json json_diagnostics = nlohmann::json::array();
   int exit_code = 0;
+  if (args.mode == Mode::report) {
+    exit_code = run_report(args, compiler, console, json_diagnostics);
+    if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
+    return exit_code;
+  }
   for (const std::string& input : args.inputs) {
     exit_code = std::max(exit_code, process_input(args, compiler, input, console, json_diagnostics));
   }

@@ -1,0 +1,105 @@
+// The variant report: for each pass and stage, Unity's counting ladder plus
+// facet's (full space -> after skip_variants -> after material usage ->
+// after scene needs -> unique after preprocessing -> unique SPIR-V), what
+// each keyword set multiplies, keywords that are dead, misspelt or free to
+// drop from a stage, "what if" savings, and compile time and SPIR-V size per
+// variant. Built from a compile (facet/compiler.h); printed as text, JSON or
+// one self-contained HTML page (docs/reports.md).
+//
+//   auto compiled = compiler.compile(*shader, {}, sources, diags);
+//   report::ShaderReport r = report::build_report(*shader, *passes, *compiled, sources, {});
+//   std::cout << report::to_text(r);
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/bigcount.h"
+#include "facet/compiler.h"
+#include "facet/ir.h"
+#include "facet/source.h"
+#include "facet/variants.h"
+
+namespace facet::report {
+
+struct ReportOptions {
+  // The keyword lists of the materials that use the shader (material
+  // manifests); nullopt: no material rung.
+  std::optional<std::vector<variants::KeywordList>> materials;
+};
+
+// One rung per column; counts of variants (full .. after_materials) and of
+// stage programs (programs .. unique_spirv) for one stage, or the pass.
+struct Ladder {
+  std::string scope;  // "pass", "vertex", "fragment", ...
+  BigCount full, after_skip, after_materials;
+  bool has_materials = false;
+  uint64_t programs = 0;      // distinct (stage, keywords the stage sees) compiled
+  uint64_t unique_tokens = 0; // distinct relevant preprocessed tokens: compiles
+  uint64_t unique_spirv = 0;  // distinct SPIR-V modules stored
+};
+
+struct KeywordSetRow {
+  std::string pragma;                 // as written, e.g. "shader_feature_local_fragment"
+  std::vector<std::string> keywords;  // "" is the off state, shown as "_"
+  std::vector<std::string> stages;    // the stages it applies to
+  uint64_t factor = 1;                // states after skip_variants: what it multiplies the pass by
+};
+
+enum class FindingKind { dead, undeclared, free_in_stage };
+
+struct Finding {
+  FindingKind kind = FindingKind::dead;
+  std::string keyword;
+  std::string stage;      // free_in_stage: the stage
+  std::string detail;     // one sentence, e.g. "did you mean '_EMISSION'?"
+};
+
+struct WhatIf {
+  std::string change;           // "make 'multi_compile _ A' shader_feature"
+  uint64_t programs_saved = 0;  // stage programs fewer to compile
+  double seconds_saved = 0;     // at this build's mean seconds per compiled program
+};
+
+struct VariantRow {
+  std::vector<std::string> keywords;
+  double seconds = 0;         // compile time of the programs it was first to need
+  uint64_t spirv_bytes = 0;   // all its stages
+};
+
+struct PassReport {
+  uint32_t index = 0;
+  std::string name, light_mode;
+  std::vector<Ladder> ladders;  // "pass" first, then each stage the program has
+  std::vector<KeywordSetRow> sets;
+  std::vector<Finding> findings;
+  std::vector<WhatIf> what_ifs;
+  std::vector<VariantRow> variants;  // in key order
+  double compile_seconds = 0;        // sum over the programs compiled
+  uint64_t spirv_bytes = 0;          // unique modules of the pass
+};
+
+struct ShaderReport {
+  std::string path, name;
+  std::vector<PassReport> passes;
+  double compile_seconds = 0;
+  uint64_t programs = 0, compiled = 0;
+};
+
+// `passes` and `compiled` must come from the same Compiler::select_passes and
+// Compiler::compile call options (all variants); `sources` holds the shader
+// and the files it included.
+ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPass>& passes,
+                          const CompiledShader& compiled, const SourceMap& sources, const ReportOptions& options);
+
+std::string to_text(const std::vector<ShaderReport>& reports);
+// Stable keys; times are rounded to microseconds.
+std::string to_json(const std::vector<ShaderReport>& reports);
+// One self-contained page with inline SVG charts, readable offline.
+std::string to_html(const std::vector<ShaderReport>& reports);
+
+std::string_view finding_name(FindingKind kind);  // "dead", "undeclared", "free"
+
+}  // namespace facet::report

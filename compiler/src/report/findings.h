@@ -1,0 +1,16 @@
+// Keyword findings (dead, undeclared, free in a stage) and "what if" lines.
+#pragma once
+
+#include <vector>
+
+#include "facet/report.h"
+
+namespace facet::report {
+
+std::vector<Finding> keyword_findings(const ir::Shader& shader, const SelectedPass& pass,
+                                      const CompiledShader& compiled, const SourceMap& sources, uint32_t pass_index);
+
+std::vector<WhatIf> what_ifs(const SelectedPass& pass, const std::vector<ProgramRecord>& records, uint32_t pass_index,
+                             double compile_seconds, const ReportOptions& options);
+
+}  // namespace facet::report

@@ -1,0 +1,142 @@
+// The report as one self-contained HTML page: tables plus inline SVG bar
+// charts (variants per keyword set, compile time per pass). No scripts, no
+// external resources: it reads the same offline.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "facet/report.h"
+
+namespace facet::report {
+namespace {
+
+// Colours the chart tests look for in a screenshot.
+constexpr const char* kSetBarColor = "#2f6fdf";
+constexpr const char* kTimeBarColor = "#e8930c";
+
+std::string escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+struct Bar {
+  std::string label, value_text;
+  double value = 0;
+};
+
+// A horizontal bar chart; bar length is proportional to `value`.
+std::string bar_chart(const std::string& css_class, const char* color, const std::vector<Bar>& bars) {
+  const int label_width = 330, bar_width = 420, row = 26;
+  double max = 0;
+  for (const Bar& b : bars) max = std::max(max, b.value);
+  std::string svg = fmt::format(R"(<svg class="{}" xmlns="http://www.w3.org/2000/svg" width="{}" height="{}" role="img">)",
+                                css_class, label_width + bar_width + 120, int(bars.size()) * row + 8);
+  for (size_t i = 0; i < bars.size(); ++i) {
+    const Bar& b = bars[i];
+    int y = int(i) * row + 4;
+    double w = max > 0 ? std::max(2.0, b.value / max * bar_width) : 2.0;
+    svg += fmt::format(R"(<text x="{}" y="{}" text-anchor="end" font-size="13">{}</text>)", label_width - 8, y + 16,
+                       escape(b.label));
+    svg += fmt::format(R"(<rect class="bar" x="{}" y="{}" width="{:.1f}" height="{}" fill="{}"/>)", label_width, y, w,
+                       row - 8, color);
+    svg += fmt::format(R"(<text x="{:.1f}" y="{}" font-size="13">{}</text>)", label_width + w + 6, y + 16,
+                       escape(b.value_text));
+  }
+  return svg + "</svg>\n";
+}
+
+std::string set_label(const KeywordSetRow& s) {
+  std::string words;
+  for (const std::string& k : s.keywords) words += (words.empty() ? "" : " ") + (k.empty() ? std::string("_") : k);
+  return words;
+}
+
+std::string ladder_table(const PassReport& p) {
+  std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th><th>after materials</th>"
+                  "<th>after scene needs</th><th>programs</th><th>unique after preprocessing</th>"
+                  "<th>unique SPIR-V</th></tr>\n";
+  for (const Ladder& l : p.ladders) {
+    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                     escape(l.scope), l.full.to_string(), l.after_skip.to_string(),
+                     l.has_materials ? l.after_materials.to_string() : "–", l.programs, l.unique_tokens,
+                     l.unique_spirv);
+  }
+  return t + "</table>\n";
+}
+
+std::string pass_section(const PassReport& p) {
+  std::string h = fmt::format("<h3>pass #{}{}{}</h3>\n", p.index, p.name.empty() ? "" : " '" + escape(p.name) + "'",
+                              p.light_mode.empty() ? "" : " (" + escape(p.light_mode) + ")");
+  h += ladder_table(p);
+  std::vector<Bar> bars;
+  for (const KeywordSetRow& s : p.sets) {
+    bars.push_back({fmt::format("{} {}", s.pragma, set_label(s)), fmt::format("×{}", s.factor),
+                    std::log2(double(std::max<uint64_t>(s.factor, 1))) + 0.15});
+  }
+  if (!bars.empty()) {
+    h += "<p class=\"caption\">Variants per keyword set (each multiplies the pass; bars on a log scale)</p>\n";
+    h += bar_chart("chart-sets", kSetBarColor, bars);
+  }
+  if (!p.findings.empty()) {
+    h += "<ul class=\"findings\">\n";
+    for (const Finding& f : p.findings) {
+      h += fmt::format("<li><b>{}</b> <code>{}</code>{}: {}</li>\n", finding_name(f.kind), escape(f.keyword),
+                       f.stage.empty() ? "" : " in " + escape(f.stage), escape(f.detail));
+    }
+    h += "</ul>\n";
+  }
+  if (!p.what_ifs.empty()) {
+    h += "<table class=\"whatif\"><tr><th>what if</th><th>programs fewer</th><th>seconds saved</th></tr>\n";
+    for (const WhatIf& w : p.what_ifs) {
+      h += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td></tr>\n", escape(w.change), w.programs_saved,
+                       w.seconds_saved);
+    }
+    h += "</table>\n";
+  }
+  return h;
+}
+
+}  // namespace
+
+std::string to_html(const std::vector<ShaderReport>& reports) {
+  std::string h = R"(<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>facet variant report</title>
+<style>
+body { font-family: sans-serif; margin: 2em; color: #1d2430; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; }
+th, td { border: 1px solid #c9cfd8; padding: 3px 8px; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+code { background: #eef1f5; padding: 0 3px; }
+.caption { color: #56607a; margin-bottom: 0; }
+</style></head><body>
+<h1>facet variant report</h1>
+)";
+  std::vector<Bar> pass_times;
+  for (const ShaderReport& r : reports) {
+    for (const PassReport& p : r.passes) {
+      pass_times.push_back({fmt::format("{} #{}{}", r.name, p.index, p.name.empty() ? "" : " " + p.name),
+                            fmt::format("{:.3f} s", p.compile_seconds), p.compile_seconds});
+    }
+  }
+  if (!pass_times.empty()) {
+    h += "<p class=\"caption\">Compile time per pass</p>\n" + bar_chart("chart-time", kTimeBarColor, pass_times);
+  }
+  for (const ShaderReport& r : reports) {
+    h += fmt::format("<h2>{}</h2>\n<p><code>{}</code>: {} programs, {} compiled, {:.3f} s</p>\n", escape(r.name),
+                     escape(r.path), r.programs, r.compiled, r.compile_seconds);
+    for (const PassReport& p : r.passes) h += pass_section(p);
+  }
+  return h + "</body></html>\n";
+}
+
+}  // namespace facet::report

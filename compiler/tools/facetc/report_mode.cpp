@@ -1,0 +1,124 @@
+// facetc --report: compile every input's variants, then report them together.
+#include "report_mode.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "facet/report.h"
+#include "units.h"
+
+namespace facet::tools {
+namespace {
+namespace fs = std::filesystem;
+
+// Files as given; folders are searched for *.shader, sorted.
+std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
+  std::vector<std::string> out;
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (!fs::is_directory(input, ec)) {
+      out.push_back(input);
+      continue;
+    }
+    std::vector<std::string> found;
+    for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+      if (it->is_regular_file(ec) && it->path().extension() == ".shader") found.push_back(it->path().string());
+    }
+    std::sort(found.begin(), found.end());
+    out.insert(out.end(), found.begin(), found.end());
+  }
+  return out;
+}
+
+void show(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sources, Console& console,
+          nlohmann::json& json_diagnostics) {
+  Diagnostics diags = apply_warning_options(raw, args.warnings);
+  if (args.diagnostics_format == DiagnosticsFormat::json) {
+    for (auto& d : nlohmann::json::parse(render_json(diags, sources))) json_diagnostics.push_back(std::move(d));
+  } else {
+    console.err << render_text(diags, sources, {.color = args.color.value_or(isatty(STDERR_FILENO) == 1)});
+  }
+}
+
+// The keyword lists of the manifest materials that use `shader`.
+std::vector<variants::KeywordList> material_keywords(const std::vector<ManifestMaterial>& materials,
+                                                     const ir::Shader& shader) {
+  std::vector<variants::KeywordList> out;
+  for (const ManifestMaterial& m : materials) {
+    if (m.shader != shader.name) continue;
+    variants::KeywordList keywords = m.keywords;
+    for (std::string& k : variants::keywords_from_properties(shader.properties, m.properties)) {
+      if (std::find(keywords.begin(), keywords.end(), k) == keywords.end()) keywords.push_back(std::move(k));
+    }
+    out.push_back(std::move(keywords));
+  }
+  return out;
+}
+
+std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Compiler& compiler,
+                                               const std::string& path,
+                                               const std::optional<std::vector<ManifestMaterial>>& materials,
+                                               Console& console, nlohmann::json& json_diagnostics) {
+  SourceMap sources;
+  Diagnostics diags;
+  std::optional<report::ShaderReport> result;
+  auto shader = compiler.load(path, sources, diags);
+  if (shader) {
+    CompileOptions options = compile_options(args, false);
+    auto passes = compiler.select_passes(*shader, options, diags);
+    std::optional<CompiledShader> compiled;
+    if (passes) {
+      if (auto c = compiler.compile(*shader, options, sources, diags)) compiled = std::move(*c);
+    }
+    if (compiled && !apply_warning_options(diags, args.warnings).has_errors()) {
+      report::ReportOptions report_options;
+      if (materials) report_options.materials = material_keywords(*materials, *shader);
+      result = report::build_report(*shader, *passes, *compiled, sources, report_options);
+    }
+  }
+  show(args, diags, sources, console, json_diagnostics);
+  return result;
+}
+
+}  // namespace
+
+int run_report(const FacetcArgs& args, const Compiler& compiler, Console& console, nlohmann::json& json_diagnostics) {
+  std::optional<std::vector<ManifestMaterial>> materials;
+  bool failed = false;
+  if (!args.material_files.empty()) {
+    materials.emplace();
+    for (const std::string& file : args.material_files) {
+      SourceMap sources;
+      Diagnostics diags;
+      auto read = read_material_manifest(file, sources, diags);
+      show(args, diags, sources, console, json_diagnostics);
+      if (!read) return 1;
+      materials->insert(materials->end(), read->begin(), read->end());
+    }
+  }
+  std::vector<report::ShaderReport> reports;
+  for (const std::string& path : expand_inputs(args.inputs)) {
+    auto r = report_one(args, compiler, path, materials, console, json_diagnostics);
+    if (r) reports.push_back(std::move(*r));
+    failed |= !r;
+  }
+  if (reports.empty()) return 1;
+  std::string text = args.report == ReportFormat::json   ? report::to_json(reports)
+                     : args.report == ReportFormat::html ? report::to_html(reports)
+                                                         : report::to_text(reports);
+  if (args.output.empty() || args.output == "-") {
+    console.out << text;
+  } else {
+    Diagnostics diags;
+    if (!write_file_atomically(args.output, text, diags)) {
+      show(args, diags, SourceMap{}, console, json_diagnostics);
+      return 1;
+    }
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace facet::tools
