@@ -9,6 +9,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxxhash-dev libzstd-dev
   libtbb-dev libtinyobjloader-dev clang-14 libclang-rt-14-dev
+  chromium
 )
 
 missing=()

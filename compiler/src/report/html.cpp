@@ -36,9 +36,15 @@ struct Bar {
 
 // A horizontal bar chart; bar length is proportional to `value`.
 std::string bar_chart(const std::string& css_class, const char* color, const std::vector<Bar>& bars) {
-  const int label_width = 330, bar_width = 420, row = 26;
+  // Labels are right-aligned before the bars; the column fits the longest
+  // (about 8 px per character at 13 px), within limits.
+  size_t longest = 0;
   double max = 0;
-  for (const Bar& b : bars) max = std::max(max, b.value);
+  for (const Bar& b : bars) {
+    longest = std::max(longest, b.label.size());
+    max = std::max(max, b.value);
+  }
+  const int label_width = std::clamp(int(longest) * 8 + 16, 120, 720), bar_width = 420, row = 26;
   std::string svg = fmt::format(R"(<svg class="{}" xmlns="http://www.w3.org/2000/svg" width="{}" height="{}" role="img">)",
                                 css_class, label_width + bar_width + 120, int(bars.size()) * row + 8);
   for (size_t i = 0; i < bars.size(); ++i) {
