@@ -80,10 +80,12 @@ class Backend {
   Backend& operator=(const Backend&) = delete;
 
   // The text glslang would see for this stage and keywords (prelude, defines,
-  // #line-mapped program), after preprocessing when `preprocess` is true.
+  // #line-mapped program), after preprocessing when `preprocess` is true;
+  // then `included_files`, when given, receives every file opened, sorted.
   Result<std::string> source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                   const std::vector<std::string>& keywords, const BackendOptions& options,
-                                  bool preprocess, SourceMap& sources, Diagnostics& diags) const;
+                                  bool preprocess, SourceMap& sources, Diagnostics& diags,
+                                  std::vector<std::string>* included_files = nullptr) const;
 
   // Compiles one stage of one variant. Errors are mapped to .shader positions.
   Result<CompiledStage> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,

@@ -40,6 +40,18 @@ std::string encode_entry(const CacheEntry& entry);
 // nullopt when the bytes are truncated, corrupt or of another format version.
 std::optional<CacheEntry> decode_entry(std::string_view bytes);
 
+// The include manifest of a program (ccache's "direct mode"): which files its
+// preprocessing read, with their content hashes, and the keys that
+// preprocessing gave. When every file still hashes the same, the program's
+// tokens are known without running the preprocessor.
+struct IncludeManifest {
+  std::string entry_key;  // the CacheEntry key
+  uint64_t token_hash = 0;
+  std::vector<std::pair<std::string, uint64_t>> files;  // path, XXH3 of the content
+};
+std::string encode_manifest(const IncludeManifest& manifest);
+std::optional<IncludeManifest> decode_manifest(std::string_view bytes);
+
 struct LoadResult {
   std::optional<CacheEntry> entry;  // set on a hit
   bool corrupt = false;             // an entry existed but failed its checks
@@ -56,6 +68,10 @@ class LocalCache {
   // Writes atomically (temporary file + rename). false when the folder is
   // not writable; a cache that cannot store never fails a build.
   bool store(const std::string& key, const CacheEntry& entry) const;
+  // Raw bytes under `key` (the driver's include manifests, which carry their
+  // own checksum); same atomic write. nullopt: absent or unreadable.
+  std::optional<std::string> load_bytes(const std::string& key) const;
+  bool store_bytes(const std::string& key, std::string_view bytes) const;
   // The entry file of `key` (for tests and tools).
   std::string path_of(const std::string& key) const;
 

@@ -59,6 +59,7 @@ struct CompileStats {
   uint64_t unique_spirv = 0;        // distinct SPIR-V blobs stored
   uint64_t cache_hits = 0;          // unique programs served by the cache
   uint64_t cache_corrupt = 0;       // cache entries that failed their checks (recompiled)
+  uint64_t preprocess_skipped = 0;  // programs whose include manifest was current (direct mode)
   uint64_t compiled = 0;            // unique programs glslang compiled
   unsigned jobs = 0;                // worker threads used
   double seconds = 0;

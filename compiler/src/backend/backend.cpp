@@ -107,12 +107,14 @@ Backend::~Backend() { glslang::FinalizeProcess(); }
 
 Result<std::string> Backend::source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                          const std::vector<std::string>& keywords, const BackendOptions& options,
-                                         bool preprocess, SourceMap& sources, Diagnostics& diags) const {
+                                         bool preprocess, SourceMap& sources, Diagnostics& diags,
+                                         std::vector<std::string>* included_files) const {
   AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
   if (!preprocess) return source.text;
   FileIncluder includer(options, stdlib_dir(options));
   GlslangOutput out = preprocess_glslang(source, program.language, stage, options, includer);
   add_included_files(includer, sources);
+  if (included_files) *included_files = included_paths(includer);
   LogContext context{program, stage, shader.file, source, includer, sources,
                      is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
   report_logs(out, context, diags);

@@ -19,6 +19,28 @@ constexpr std::string_view kMagic = "FACETCACHE";
 constexpr uint16_t kVersion = 1;
 constexpr uint64_t kChecksumSeed = 0x66616365745f6361ull;  // "facet_ca"
 
+}  // namespace
+
+static std::string fmt_hex(uint64_t v) {
+  static const char digits[] = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 15; i >= 0; --i, v >>= 4) out[size_t(i)] = digits[v & 0xf];
+  return out;
+}
+
+static std::optional<uint64_t> parse_hex(std::string_view s) {
+  if (s.size() != 16) return std::nullopt;
+  uint64_t v = 0;
+  for (char c : s) {
+    int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+    if (d < 0) return std::nullopt;
+    v = v << 4 | uint64_t(d);
+  }
+  return v;
+}
+
+namespace {
+
 void put_u64(std::string& out, uint64_t v) {
   for (int i = 0; i < 8; ++i) out += char((v >> (8 * i)) & 0xff);
 }
@@ -111,5 +133,58 @@ std::optional<CacheEntry> decode_entry(std::string_view bytes) {
 }
 
 std::string_view build_id() { return FACET_BUILD_ID; }
+
+}  // namespace facet::cache
+
+namespace facet::cache {
+namespace {
+constexpr std::string_view kManifestMagic = "FACETMANIFEST1\n";
+}  // namespace
+
+// Text lines: magic, "key <hex>", "tokens <hex>", "file <hex> <path>"...,
+// then "check <hex>" = XXH64 of everything before it.
+std::string encode_manifest(const IncludeManifest& manifest) {
+  std::string out(kManifestMagic);
+  out += "key " + manifest.entry_key + "\n";
+  out += fmt_hex(manifest.token_hash) + "\n";
+  for (const auto& [path, hash] : manifest.files) out += "file " + fmt_hex(hash) + " " + path + "\n";
+  out += "check " + fmt_hex(XXH64(out.data(), out.size(), kChecksumSeed)) + "\n";
+  return out;
+}
+
+std::optional<IncludeManifest> decode_manifest(std::string_view bytes) {
+  size_t check = bytes.rfind("check ");
+  if (!bytes.starts_with(kManifestMagic) || check == std::string_view::npos || !bytes.ends_with("\n")) {
+    return std::nullopt;
+  }
+  std::string_view body = bytes.substr(0, check);
+  auto stated = parse_hex(bytes.substr(check + 6, bytes.size() - check - 7));
+  if (!stated || *stated != XXH64(body.data(), body.size(), kChecksumSeed)) return std::nullopt;
+  IncludeManifest m;
+  size_t pos = kManifestMagic.size();
+  int line_no = 0;
+  while (pos < body.size()) {
+    size_t eol = body.find('\n', pos);
+    if (eol == std::string_view::npos) return std::nullopt;
+    std::string_view line = body.substr(pos, eol - pos);
+    pos = eol + 1;
+    if (line_no == 0) {
+      if (!line.starts_with("key ")) return std::nullopt;
+      m.entry_key = std::string(line.substr(4));
+    } else if (line_no == 1) {
+      auto h = parse_hex(line);
+      if (!h) return std::nullopt;
+      m.token_hash = *h;
+    } else {
+      if (!line.starts_with("file ") || line.size() < 22 || line[21] != ' ') return std::nullopt;
+      auto h = parse_hex(line.substr(5, 16));
+      if (!h) return std::nullopt;
+      m.files.emplace_back(std::string(line.substr(22)), *h);
+    }
+    ++line_no;
+  }
+  if (line_no < 2) return std::nullopt;
+  return m;
+}
 
 }  // namespace facet::cache

@@ -29,19 +29,29 @@ std::string LocalCache::path_of(const std::string& key) const {
   return (fs::path(dir_) / key.substr(0, 2) / key).string();
 }
 
-LoadResult LocalCache::load(const std::string& key) const {
-  if (!valid_key(key)) return {};
+std::optional<std::string> LocalCache::load_bytes(const std::string& key) const {
+  if (!valid_key(key)) return std::nullopt;
   std::ifstream in(path_of(key), std::ios::binary);
-  if (!in) return {};
+  if (!in) return std::nullopt;
   std::ostringstream bytes;
   bytes << in.rdbuf();
+  return bytes.str();
+}
+
+LoadResult LocalCache::load(const std::string& key) const {
+  std::optional<std::string> bytes = load_bytes(key);
+  if (!bytes) return {};
   LoadResult result;
-  result.entry = decode_entry(bytes.str());
+  result.entry = decode_entry(*bytes);
   result.corrupt = !result.entry;
   return result;
 }
 
 bool LocalCache::store(const std::string& key, const CacheEntry& entry) const {
+  return store_bytes(key, encode_entry(entry));
+}
+
+bool LocalCache::store_bytes(const std::string& key, std::string_view bytes) const {
   if (!valid_key(key)) return false;
   std::error_code ec;
   fs::path target = path_of(key);
@@ -53,7 +63,6 @@ bool LocalCache::store(const std::string& key, const CacheEntry& entry) const {
   temp += ".tmp." + std::to_string(::getpid()) + "." +
           std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) + "." +
           std::to_string(counter++);
-  std::string bytes = encode_entry(entry);
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), std::streamsize(bytes.size()));

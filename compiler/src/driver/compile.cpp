@@ -13,6 +13,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
 #include <map>
 #include <set>
 #include <thread>
@@ -94,6 +97,15 @@ void parallel_for_each(size_t n, unsigned jobs, const Body& body) {
   });
 }
 
+// `"file"` of a #line marker as an absolute path, so that the same program
+// reached through another working folder or relative path hashes the same.
+std::string absolute_name(std::string_view quoted) {
+  if (quoted.size() < 2 || quoted[1] == '<' || quoted.back() != '"') return std::string(quoted);
+  std::error_code ec;
+  std::filesystem::path p(std::string(quoted.substr(1, quoted.size() - 2)));
+  return "\"" + std::filesystem::absolute(p, ec).lexically_normal().string() + "\"";
+}
+
 // The tokens of a preprocessed text: layout dropped and the line numbers of
 // `#line` markers too (a keyword's #define shifts the prelude's lines without
 // changing the program), but not their file names. With debug info the lines
@@ -114,7 +126,7 @@ std::string token_text(const std::string& text, bool keep_lines) {
     if (line.starts_with("#line")) {
       size_t quote = line.find('"');
       tokens += "#line ";
-      if (quote != std::string_view::npos) tokens += line.substr(quote);
+      if (quote != std::string_view::npos) tokens += absolute_name(line.substr(quote));
       tokens += '\n';
       continue;
     }
@@ -141,6 +153,45 @@ std::string key_context(const ir::Shader& shader, const ir::Program& program, St
   }
   return context;
 }
+
+// What else decides which files an #include finds: the search path and the
+// including file's folder (absolute, so any working folder finds the entry).
+std::string search_context(const ir::Shader& shader, const backend::BackendOptions& options,
+                           const SourceMap& sources) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::string context = "|direct|" + fs::absolute(sources.path(shader.file), ec).lexically_normal().string();
+  for (const std::string& dir : options.include_dirs) context += "|I" + fs::absolute(dir, ec).string();
+  context += "|stdlib " + (options.stdlib_dir.empty() ? backend::default_stdlib_dir() : options.stdlib_dir);
+  for (const auto& [name, value] : options.defines) context += "|D" + name + "=" + value;
+  return context;
+}
+
+// Content hashes of files, each read once per build; safe across threads.
+class FileHashes {
+ public:
+  std::optional<uint64_t> of(const std::string& path) {
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = hashes_.find(path); it != hashes_.end()) return it->second;
+    }
+    std::optional<uint64_t> hash;
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+      std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      hash = XXH3_64bits(bytes.data(), bytes.size());
+    }
+    std::lock_guard lock(mutex_);
+    return hashes_.emplace(path, hash).first->second;
+  }
+  bool unchanged(const std::vector<std::pair<std::string, uint64_t>>& files) {
+    return std::all_of(files.begin(), files.end(), [&](const auto& f) { return of(f.first) == f.second; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::optional<uint64_t>> hashes_;
+};
 
 std::string hex_key(const std::string& context, const std::string& tokens) {
   XXH3_state_t* state = XXH3_createState();
@@ -243,11 +294,35 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   Plan plan = plan_tasks(*passes, std::move(keys));
   const unsigned jobs = worker_count(options.jobs);
 
+  std::optional<cache::LocalCache> store;
+  if (!options.cache_dir.empty()) store.emplace(options.cache_dir);
+  FileHashes file_hashes;
+  std::atomic<uint64_t> manifest_hits{0};
   parallel_for_each(plan.tasks.size(), jobs, [&](size_t i) {
     StageTask& t = plan.tasks[i];
     const ir::Program& program = *(*passes)[t.pass].ir->program;
     Diagnostics ignored;  // the compile reports the same problems with more context
-    auto text = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, true, sources, ignored);
+    const std::string context = key_context(shader, program, t.stage, options.backend);
+    std::string manifest_key;
+    if (store) {
+      // Direct mode: the text before preprocessing and the files it read last time.
+      auto assembled = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, false, sources,
+                                            ignored);
+      manifest_key = hex_key(context + search_context(shader, options.backend, sources), *assembled);
+      if (auto bytes = store->load_bytes(manifest_key)) {
+        auto manifest = cache::decode_manifest(*bytes);
+        if (manifest && file_hashes.unchanged(manifest->files)) {
+          t.preprocessed = true;
+          t.text_hash = manifest->token_hash;
+          t.cache_key = manifest->entry_key;
+          ++manifest_hits;
+          return;
+        }
+      }
+    }
+    std::vector<std::string> included;
+    auto text = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, true, sources, ignored,
+                                     &included);
     if (!text) return;
     t.preprocessed = true;
     std::string tokens = token_text(*text, options.backend.debug_info);
@@ -258,7 +333,14 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
       tokens = reachable_text(tokens, program.entry_points[size_t(t.stage)]);
     }
     t.text_hash = XXH3_64bits(tokens.data(), tokens.size());
-    t.cache_key = hex_key(key_context(shader, program, t.stage, options.backend), tokens);
+    t.cache_key = hex_key(context, tokens);
+    if (store) {
+      cache::IncludeManifest manifest{.entry_key = t.cache_key, .token_hash = t.text_hash};
+      for (const std::string& path : included) {
+        if (auto h = file_hashes.of(path)) manifest.files.emplace_back(path, *h);
+      }
+      if (manifest.files.size() == included.size()) (void)store->store_bytes(manifest_key, cache::encode_manifest(manifest));
+    }
   });
   size_t compiling = assign_compilers(*passes, plan.tasks);
 
@@ -266,8 +348,6 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   for (size_t i = 0; i < plan.tasks.size(); ++i) {
     if (plan.tasks[i].compiled_by == i) to_compile.push_back(i);
   }
-  std::optional<cache::LocalCache> store;
-  if (!options.cache_dir.empty()) store.emplace(options.cache_dir);
   std::atomic<uint64_t> hits{0}, corrupt{0};
   parallel_for_each(to_compile.size(), jobs, [&](size_t n) {
     StageTask& t = plan.tasks[to_compile[n]];
@@ -356,6 +436,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.stage_programs = plan.tasks.size();
   out.stats.unique_preprocessed = compiling;
   out.stats.cache_hits = hits;
+  out.stats.preprocess_skipped = manifest_hits;
   out.stats.cache_corrupt = corrupt;
   out.stats.compiled = to_compile.size() - hits;
   out.stats.unique_spirv = pkg.spirv_blobs.size();

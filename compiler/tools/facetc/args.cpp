@@ -45,8 +45,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--stdlib-dir", raw.stdlib_dir, "the stdlib folder (default: the built-in one)");
   app.add_flag("-E", raw.preprocess, "print the preprocessed source of the selected variant");
   app.add_flag("-S", raw.assemble, "print SPIR-V assembly (or --emit's kind) instead of a package");
-  app.add_option("--emit", raw.emit, "spirv-asm, spirv, glsl, essl or msl (implies -S)")
-      ->check(CLI::IsMember({"spirv-asm", "spirv", "glsl", "essl", "msl"}));
+  app.add_option("--emit", raw.emit, "spirv-asm, spirv, glsl, essl, msl, or source (before preprocessing; implies -S)")
+      ->check(CLI::IsMember({"spirv-asm", "spirv", "glsl", "essl", "msl", "source"}));
   app.add_flag("--reflect", raw.reflect, "print the reflection of the selected variant as JSON");
   app.add_flag("--list-variants", raw.list_variants, "print keyword sets, counts and every variant");
   app.add_option("--dump", raw.dump, "print as JSON: package (default), ast, ir or variants")
@@ -123,7 +123,7 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
                                                                                    : ReportFormat::text;
   static const std::map<std::string, EmitKind> emits = {{"", EmitKind::spirv_asm},
       {"spirv-asm", EmitKind::spirv_asm}, {"spirv", EmitKind::spirv}, {"glsl", EmitKind::glsl},
-      {"essl", EmitKind::essl}, {"msl", EmitKind::msl}};
+      {"essl", EmitKind::essl}, {"msl", EmitKind::msl}, {"source", EmitKind::source}};
   static const std::map<std::string, DumpKind> dumps = {{"", DumpKind::package}, {"package", DumpKind::package},
       {"ast", DumpKind::ast}, {"ir", DumpKind::ir}, {"variants", DumpKind::variants}};
   args.emit = emits.at(raw.emit);

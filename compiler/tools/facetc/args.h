@@ -25,7 +25,9 @@ enum class Mode {
 
 enum class ReportFormat { text, json, html };
 
-enum class EmitKind { spirv_asm, spirv, glsl, essl, msl };
+// `source`: the text handed to glslang (prelude, keyword #defines, #line-mapped
+// program), before its preprocessor runs.
+enum class EmitKind { spirv_asm, spirv, glsl, essl, msl, source };
 enum class DumpKind { package, ast, ir, variants };
 enum class DiagnosticsFormat { text, json };
 

@@ -75,8 +75,11 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
                           input, s.passes, s.variants, s.stage_programs, s.unique_preprocessed, s.unique_spirv,
                           bytes.size(), s.seconds, s.jobs);
   if (!args.cache_dir.empty()) {
-    out.stats += fmt::format("facetc: {}: cache: local hits {} / compiled {}{}\n", input, s.cache_hits, s.compiled,
-                             s.cache_corrupt ? fmt::format(" ({} corrupt entries recompiled)", s.cache_corrupt) : "");
+    out.stats += fmt::format("facetc: {}: cache: local hits {} / compiled {}{}; {} of {} programs not preprocessed "
+                             "(include manifests current)\n",
+                             input, s.cache_hits, s.compiled,
+                             s.cache_corrupt ? fmt::format(" ({} corrupt entries recompiled)", s.cache_corrupt) : "",
+                             s.preprocess_skipped, s.stage_programs);
   }
   if (args.mode == Mode::dump) out.bytes = package::package_to_json(compiled->package);
   return out;

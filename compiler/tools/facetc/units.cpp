@@ -62,15 +62,17 @@ std::optional<std::string> unit_text(const FacetcArgs& args, const Compiler& com
                                      const Unit& unit, SourceMap& sources, Diagnostics& diags) {
   const ir::Program& program = *unit.pass->ir->program;
   const backend::BackendOptions& options = args.backend;
-  if (args.mode == Mode::preprocess) {
-    auto text = compiler.backend().source_text(shader, program, unit.stage, unit.keywords, options, true, sources,
-                                               diags);
+  if (args.mode == Mode::preprocess || (args.mode == Mode::emit && args.emit == EmitKind::source)) {
+    bool preprocess = args.mode == Mode::preprocess;
+    auto text = compiler.backend().source_text(shader, program, unit.stage, unit.keywords, options, preprocess,
+                                               sources, diags);
     return text ? std::optional(*text) : std::nullopt;
   }
   auto compiled = compiler.backend().compile(shader, program, unit.stage, unit.keywords, options, sources, diags);
   if (!compiled) return std::nullopt;
   if (args.mode == Mode::reflect) return reflection_to_json_text(compiled->reflection, -1);
   switch (args.emit) {
+    case EmitKind::source:  // handled above
     case EmitKind::spirv_asm:
       return backend::disassemble(compiled->spirv);
     case EmitKind::spirv:

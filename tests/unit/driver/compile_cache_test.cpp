@@ -19,11 +19,12 @@ struct Build {
   CompileStats stats;
 };
 
-Build build(const std::string& cache_dir, unsigned jobs = 2) {
+Build build(const std::string& cache_dir, unsigned jobs = 2,
+            const std::string& path = std::string(FACET_SOURCE_DIR) + "/examples/shaders/Keywords.shader") {
   Compiler compiler;
   SourceMap sources;
   Diagnostics diags;
-  auto shader = compiler.load(std::string(FACET_SOURCE_DIR) + "/examples/shaders/Keywords.shader", sources, diags);
+  auto shader = compiler.load(path, sources, diags);
   EXPECT_TRUE(shader);
   auto compiled = compiler.compile(*shader, {.jobs = jobs, .cache_dir = cache_dir}, sources, diags);
   EXPECT_TRUE(compiled) << render_text(diags, sources);
@@ -39,10 +40,15 @@ class DriverCacheTest : public testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
+  // Compiled programs (not the include manifests stored beside them).
   std::vector<fs::path> entries() const {
     std::vector<fs::path> out;
     for (const auto& e : fs::recursive_directory_iterator(dir_)) {
-      if (e.is_regular_file()) out.push_back(e.path());
+      if (!e.is_regular_file()) continue;
+      std::ifstream in(e.path(), std::ios::binary);
+      char magic[10] = {};
+      in.read(magic, sizeof magic);
+      if (std::string_view(magic, sizeof magic) == "FACETCACHE") out.push_back(e.path());
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -56,11 +62,13 @@ TEST_F(DriverCacheTest, WarmBuildCompilesNothingAndGivesTheSameBytes) {
   EXPECT_EQ(cold.stats.cache_hits, 0u);
   EXPECT_EQ(cold.stats.compiled, cold.stats.unique_preprocessed);
   EXPECT_EQ(entries().size(), cold.stats.unique_preprocessed);
+  EXPECT_EQ(cold.stats.preprocess_skipped, 0u);
   Build warm = build(dir_.string(), 1);
+  EXPECT_EQ(warm.stats.preprocess_skipped, warm.stats.stage_programs) << "include manifests are current";
   EXPECT_EQ(warm.stats.compiled, 0u);
   EXPECT_EQ(warm.stats.cache_hits, warm.stats.unique_preprocessed);
-  EXPECT_EQ(reference.bytes, cold.bytes);
-  EXPECT_EQ(reference.bytes, warm.bytes);
+  EXPECT_TRUE(reference.bytes == cold.bytes);
+  EXPECT_TRUE(reference.bytes == warm.bytes);
 }
 
 TEST_F(DriverCacheTest, CorruptEntriesAreRecompiledNeverUsed) {
@@ -81,13 +89,50 @@ TEST_F(DriverCacheTest, CorruptEntriesAreRecompiledNeverUsed) {
   flipped[flipped.size() / 2] ^= 1;
   std::ofstream(files[3], std::ios::binary | std::ios::trunc) << flipped;
 
-  Build again = build(dir_.string());
+  Build again = build(dir_.string());  // manifests current: straight to the entries
   EXPECT_EQ(again.stats.cache_corrupt, 4u);
   EXPECT_EQ(again.stats.compiled, 4u);
-  EXPECT_EQ(again.bytes, reference.bytes);
+  EXPECT_TRUE(again.bytes == reference.bytes);
   Build healed = build(dir_.string());
   EXPECT_EQ(healed.stats.cache_corrupt, 0u);
   EXPECT_EQ(healed.stats.compiled, 0u);
+}
+
+// Direct mode: a changed include invalidates the manifests that list it; a
+// change that leaves the tokens alone still hits the compiled entries.
+TEST_F(DriverCacheTest, ChangedIncludesAreNoticedWithoutPreprocessingTheRest) {
+  fs::path src = dir_ / "src";
+  fs::create_directories(src);
+  std::ofstream(src / "Tint.cginc") << "float4 tint(float4 c) { return c * 0.5; }\n";
+  std::ofstream(src / "T.shader") << R"(Shader "T/Tint" { SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    #pragma multi_compile _ A
+    #include "Tint.cginc"
+    float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+    float4 frag() : SV_Target { return tint(float4(1, 1, 1, 1)); }
+    ENDCG
+  } } })";
+  std::string cache = (dir_ / "cache").string(), shader = (src / "T.shader").string();
+  Build cold = build(cache, 2, shader);
+  Build warm = build(cache, 2, shader);
+  EXPECT_EQ(warm.stats.preprocess_skipped, 4u);
+  EXPECT_TRUE(warm.bytes == cold.bytes);
+
+  std::ofstream(src / "Tint.cginc") << "// a comment changes no token\nfloat4 tint(float4 c) { return c * 0.5; }\n";
+  Build comment = build(cache, 2, shader);
+  EXPECT_EQ(comment.stats.preprocess_skipped, 0u) << "every manifest lists Tint.cginc";
+  EXPECT_EQ(comment.stats.compiled, 0u) << "the tokens are the same";
+
+  std::ofstream(src / "Tint.cginc") << "float4 tint(float4 c) { return c * 0.25; }\n";
+  Build changed = build(cache, 2, shader);
+  EXPECT_EQ(changed.stats.preprocess_skipped, 0u);
+  EXPECT_EQ(changed.stats.compiled, 1u) << "only the fragment program calls tint()";
+  EXPECT_FALSE(changed.bytes == cold.bytes);
+  Build again = build(cache, 2, shader);
+  EXPECT_EQ(again.stats.preprocess_skipped, 4u);
+  EXPECT_TRUE(again.bytes == changed.bytes);
 }
 
 TEST_F(DriverCacheTest, KeysChangeWithOptions) {
