@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ std::string version_string();
 // stdlib/ for a build-tree binary, else the installed share/facet/stdlib.
 std::string default_stdlib_dir();
 
+// What a variant filter callback sees of one variant.
+struct VariantInfo {
+  const ir::Pass& pass;
+  size_t pass_index = 0;                     // in the SubShader
+  const std::vector<std::string>& keywords;  // enabled keywords, set order
+};
+
 struct CompileOptions {
   backend::BackendOptions backend;
   // Pass names (case-insensitive) or 0-based indices into the chosen
@@ -48,12 +56,21 @@ struct CompileOptions {
   unsigned jobs = 0;
   // The compile cache folder (facet/cache.h); empty: no cache.
   std::string cache_dir;
+  // Stripping (docs/stripping.md), applied after skip_variants and the
+  // shader's keyword_rule pragmas: the keyword lists of the materials that
+  // use the shader (the shader_feature rule made explicit; nullopt: every
+  // combination), a declarative filter, and a callback in the manner of
+  // Unity's IPreprocessShaders that returns false to strip a variant.
+  std::optional<std::vector<variants::KeywordList>> materials;
+  variants::StripFilter strip;
+  std::function<bool(const VariantInfo&)> variant_filter;
 };
 
 // What a compile did, rung by rung of the dedupe ladder.
 struct CompileStats {
   uint64_t passes = 0;
   uint64_t variants = 0;            // variants in the package
+  uint64_t variants_stripped = 0;   // by keyword_rule pragmas, the strip filter and the callback
   uint64_t stage_programs = 0;      // (pass, stage, keywords the stage sees) programs needed
   uint64_t unique_preprocessed = 0; // distinct preprocessed texts among them: compiled once each
   uint64_t unique_spirv = 0;        // distinct SPIR-V blobs stored
@@ -109,9 +126,12 @@ class Compiler {
   Result<std::vector<SelectedPass>> select_passes(const ir::Shader& shader, const CompileOptions& options,
                                                   Diagnostics& diags) const;
 
-  // The variants of one pass that `options` asks for.
+  // The variants of one pass that `options` asks for, after stripping; the
+  // second form adds the number stripped to `*stripped`.
   Result<std::vector<variants::VariantKey>> select_variants(const SelectedPass& pass, const CompileOptions& options,
                                                             Diagnostics& diags) const;
+  Result<std::vector<variants::VariantKey>> select_variants(const SelectedPass& pass, const CompileOptions& options,
+                                                            Diagnostics& diags, uint64_t* stripped) const;
 
   // Compiles the selected passes and variants into a package. Identical
   // messages from many variants are merged ("in 12 of 48 variants").

@@ -36,6 +36,7 @@ struct Ladder {
   std::string scope;  // "pass", "vertex", "fragment", ...
   BigCount full, after_skip, after_materials;
   bool has_materials = false;
+  uint64_t after_strip = 0;   // variants (stage: distinct stage views) left by keyword_rule and --strip
   uint64_t programs = 0;      // distinct (stage, keywords the stage sees) compiled
   uint64_t unique_tokens = 0; // distinct relevant preprocessed tokens: compiles
   uint64_t unique_spirv = 0;  // distinct SPIR-V modules stored

@@ -42,11 +42,26 @@ struct KeywordSet {
   bool applies_to(Stage s) const { return (stages & stage_bit(s)) != 0; }
 };
 
+// `#pragma keyword_rule requires|excludes|implies KEYWORD OTHER...`: a
+// constraint between keywords that removes variants (docs/stripping.md).
+//   requires A B C : A only together with B and C
+//   excludes A B C : A never together with B or C
+//   implies  A B   : as requires, and selecting A at draw time enables B
+enum class RuleKind : uint8_t { requires_all, excludes, implies };
+
+struct KeywordRule {
+  RuleKind kind = RuleKind::requires_all;
+  std::string keyword;
+  std::vector<std::string> others;
+  SourceSpan span;
+};
+
 // The keyword space of one program (one pass).
 struct KeywordSpace {
   std::vector<KeywordSet> sets;                 // variant-producing sets, in declaration order
   std::vector<std::string> dynamic_branch_keywords;  // uniform bools, no variants
   std::vector<std::string> skip_variants;       // keywords never enabled
+  std::vector<KeywordRule> rules;               // keyword_rule pragmas, in order
 };
 
 // VariantKey::choice value meaning "this set contributes no keyword": every
@@ -159,6 +174,40 @@ struct Selection {
 Result<Selection> select_variant(const KeywordSpace& space, const KeywordList& material_keywords,
                                  const KeywordList& global_keywords, const SelectOptions& options,
                                  Diagnostics& diags);
+
+// ---- stripping -----------------------------------------------------------------
+
+// A declarative strip filter, like Unity's IPreprocessShaders without code
+// (docs/stripping.md). Rules apply to every pass, or to the one `pass` names
+// (a name, case-insensitive, or a 0-based index).
+//   deny       : drop variants that enable all of `keywords`
+//   allow      : exempt variants that enable all of `keywords` from deny rules
+//   always_on  : the feature is always on: drop variants without each keyword
+//   always_off : the feature is never used: drop variants with any keyword
+enum class StripKind : uint8_t { deny, allow, always_on, always_off };
+
+struct StripRule {
+  StripKind kind = StripKind::deny;
+  std::vector<std::string> keywords;
+  std::string pass;  // "" : every pass
+};
+
+struct StripFilter {
+  std::vector<StripRule> rules;
+  bool empty() const { return rules.empty(); }
+};
+
+// Why the variant with these enabled keywords is stripped, or nullopt when it
+// stays: the first keyword_rule of the space it breaks, else the filter's
+// verdict for this pass (`pass_name`, `pass_index`).
+std::optional<std::string> strip_reason(const KeywordSpace& space, const std::vector<std::string>& keywords,
+                                        const StripFilter& filter, const std::string& pass_name, size_t pass_index);
+
+// Keywords that `implies` rules add to an enabled list, to a fixed point.
+KeywordList apply_implications(const KeywordSpace& space, KeywordList keywords);
+
+// "requires", "excludes", "implies".
+std::string_view rule_kind_name(RuleKind kind);
 
 // ---- keywords implied by material property values ---------------------------
 

@@ -286,8 +286,9 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
 
   bool failed = false;
   std::vector<std::vector<variants::VariantKey>> keys;
+  uint64_t stripped = 0;
   for (const SelectedPass& sel : *passes) {
-    auto k = select_variants(sel, options, diags);
+    auto k = select_variants(sel, options, diags, &stripped);
     if (!k) failed = true;
     keys.push_back(k ? std::move(*k) : std::vector<variants::VariantKey>{});
   }
@@ -434,6 +435,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   Diagnostics invariant;
   if (!package::validate_package(pkg, invariant)) FACET_ICE("the driver built an invalid package");
   out.stats.stage_programs = plan.tasks.size();
+  out.stats.variants_stripped = stripped;
   out.stats.unique_preprocessed = compiling;
   out.stats.cache_hits = hits;
   out.stats.preprocess_skipped = manifest_hits;

@@ -103,19 +103,58 @@ Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shad
   return selected;
 }
 
+namespace {
+
+bool strips_anything(const SelectedPass& pass, const CompileOptions& options) {
+  return !pass.keywords.rules.empty() || !options.strip.empty() || options.variant_filter;
+}
+
+// The enumerated keys that survive the keyword rules, the filter and the callback.
+std::vector<variants::VariantKey> surviving(const SelectedPass& pass, std::vector<variants::VariantKey> keys,
+                                            const CompileOptions& options, uint64_t* stripped) {
+  if (!strips_anything(pass, options)) return keys;
+  std::vector<variants::VariantKey> out;
+  for (variants::VariantKey& key : keys) {
+    std::vector<std::string> keywords = variants::all_keywords(pass.keywords, key);
+    bool keep = !variants::strip_reason(pass.keywords, keywords, options.strip, pass.ir->name, pass.pass);
+    if (keep && options.variant_filter) keep = options.variant_filter({*pass.ir, pass.pass, keywords});
+    if (keep) out.push_back(std::move(key));
+  }
+  if (stripped) *stripped += keys.size() - out.size();
+  return out;
+}
+
+}  // namespace
+
 Result<std::vector<variants::VariantKey>> Compiler::select_variants(const SelectedPass& pass,
                                                                     const CompileOptions& options,
                                                                     Diagnostics& diags) const {
+  return select_variants(pass, options, diags, nullptr);
+}
+
+Result<std::vector<variants::VariantKey>> Compiler::select_variants(const SelectedPass& pass,
+                                                                    const CompileOptions& options,
+                                                                    Diagnostics& diags, uint64_t* stripped) const {
+  variants::EnumerateOptions enumerate{.materials = options.materials,
+                                       .max_variants = options.max_variants_per_pass == 0
+                                                           ? UINT64_MAX
+                                                           : options.max_variants_per_pass};
   if (options.keywords) {
     variants::SelectOptions select{.strict = options.strict_selection};
+    std::vector<variants::VariantKey> available;
+    if (strips_anything(pass, options) || options.materials) {
+      auto keys = variants::enumerate(pass.keywords, enumerate, diags);
+      FACET_TRY(keys);
+      available = surviving(pass, std::move(*keys), options, nullptr);
+      select.available = &available;
+    }
     auto chosen = variants::select_variant(pass.keywords, *options.keywords, {}, select, diags);
     FACET_TRY(chosen);
     return std::vector<variants::VariantKey>{chosen->key};
   }
-  variants::EnumerateOptions enumerate{.max_variants = options.max_variants_per_pass == 0
-                                                           ? UINT64_MAX
-                                                           : options.max_variants_per_pass};
-  return variants::enumerate(pass.keywords, enumerate, diags);
+  auto keys = variants::enumerate(pass.keywords, enumerate, diags);
+  FACET_TRY(keys);
+  return surviving(pass, std::move(*keys), options, stripped);
 }
 
 }  // namespace facet

@@ -19,7 +19,7 @@ std::vector<Stage> program_stages(const ir::Program& program) {
 }
 
 Ladder count_ladder(const SelectedPass& pass, std::optional<Stage> stage, const ReportOptions& options,
-                    const std::vector<ProgramRecord>& records, uint32_t pass_index) {
+                    const std::vector<ProgramRecord>& records, uint32_t pass_index, const package::PackagePass& pp) {
   variants::VariantCounts counts = variants::count_variants(pass.keywords, {.stage = stage, .materials = options.materials});
   Ladder ladder{.scope = stage ? std::string(stage_name(*stage)) : "pass", .full = counts.full,
                 .after_skip = counts.after_skip, .after_materials = counts.after_materials,
@@ -32,6 +32,11 @@ Ladder count_ladder(const SelectedPass& pass, std::optional<Stage> stage, const 
     tokens.insert({int(r.stage), r.token_hash});
     if (r.blob != UINT32_MAX) blobs.insert(r.blob);
   }
+  std::set<variants::VariantKey> views;
+  for (const package::PackageVariant& v : pp.variants) {
+    views.insert(stage ? variants::project(pass.keywords, v.key, *stage) : v.key);
+  }
+  ladder.after_strip = views.size();
   ladder.unique_tokens = tokens.size();
   ladder.unique_spirv = blobs.size();
   return ladder;
@@ -88,9 +93,9 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
   for (uint32_t p = 0; p < passes.size() && p < pkg.passes.size(); ++p) {
     const SelectedPass& sel = passes[p];
     PassReport pr{.index = uint32_t(sel.pass), .name = sel.ir->name, .light_mode = sel.ir->tag("LightMode")};
-    pr.ladders.push_back(count_ladder(sel, std::nullopt, options, compiled.programs, p));
+    pr.ladders.push_back(count_ladder(sel, std::nullopt, options, compiled.programs, p, pkg.passes[p]));
     for (Stage s : program_stages(*sel.ir->program)) {
-      pr.ladders.push_back(count_ladder(sel, s, options, compiled.programs, p));
+      pr.ladders.push_back(count_ladder(sel, s, options, compiled.programs, p, pkg.passes[p]));
     }
     pr.sets = set_rows(sel.keywords, *sel.ir->program);
     pr.variants = variant_rows(sel, pkg.passes[p], pkg, compiled.programs, p);

@@ -68,12 +68,14 @@ std::string set_label(const KeywordSetRow& s) {
 }
 
 std::string ladder_table(const PassReport& p) {
-  std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th><th>after materials</th>"
+  std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th>"
+                  "<th>after keyword_rule + --strip</th><th>after materials</th>"
                   "<th>after scene needs</th><th>programs</th><th>unique after preprocessing</th>"
                   "<th>unique SPIR-V</th></tr>\n";
   for (const Ladder& l : p.ladders) {
-    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
-                     escape(l.scope), l.full.to_string(), l.after_skip.to_string(),
+    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td><td>{}</td>"
+                     "<td>{}</td></tr>\n",
+                     escape(l.scope), l.full.to_string(), l.after_skip.to_string(), l.after_strip,
                      l.has_materials ? l.after_materials.to_string() : "–", l.programs, l.unique_tokens,
                      l.unique_spirv);
   }

@@ -20,6 +20,7 @@ Json count(const BigCount& n) {
 Json ladder_json(const Ladder& l) {
   Json j = {{"scope", l.scope}, {"full", count(l.full)}, {"after_skip_variants", count(l.after_skip)}};
   j["after_materials"] = l.has_materials ? count(l.after_materials) : Json(nullptr);
+  j["after_keyword_rules_and_strip"] = l.after_strip;
   j["after_scene_needs"] = nullptr;  // scenes are the runtime's (facet render --explain)
   j["programs"] = l.programs;
   j["unique_after_preprocessing"] = l.unique_tokens;

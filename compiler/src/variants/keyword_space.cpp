@@ -142,6 +142,7 @@ class SpaceBuilder {
   void add_keyword_pragma(const ir::Pragma& pragma, const DirectiveForm& form);
   void add_shortcut(const ir::Pragma& pragma);
   void add_skip_variants(const ir::Pragma& pragma);
+  void add_keyword_rule(const ir::Pragma& pragma);
   void report_unknown_directive(const ir::Pragma& pragma);
   std::optional<std::vector<std::string>> read_keywords(const ir::Pragma& pragma);
   bool claim(const std::string& keyword, SourceSpan span, bool dynamic);
@@ -155,6 +156,7 @@ class SpaceBuilder {
 
 void SpaceBuilder::add(const ir::Pragma& pragma) {
   if (pragma.name == "skip_variants") return add_skip_variants(pragma);
+  if (pragma.name == "keyword_rule") return add_keyword_rule(pragma);
   if (!keyword_family(pragma.name)) return;  // not a keyword pragma
   if (auto form = parse_directive(pragma.name)) return add_keyword_pragma(pragma, *form);
   // Not base[_local][_stage]: a shortcut, or a typo of one or of a suffix.
@@ -259,6 +261,27 @@ void SpaceBuilder::add_skip_variants(const ir::Pragma& pragma) {
   }
 }
 
+void SpaceBuilder::add_keyword_rule(const ir::Pragma& pragma) {
+  std::vector<std::string> args;
+  for (std::string_view a : pragma_args(pragma)) args.emplace_back(a);
+  static const std::map<std::string, RuleKind> kinds = {
+      {"requires", RuleKind::requires_all}, {"excludes", RuleKind::excludes}, {"implies", RuleKind::implies}};
+  auto kind = args.empty() ? kinds.end() : kinds.find(args[0]);
+  if (kind == kinds.end() || args.size() < 3) {
+    diags_.add(DiagId::pragma_bad_keyword_rule, pragma.span,
+               "'#pragma keyword_rule' takes 'requires', 'excludes' or 'implies', a keyword and the keywords it "
+               "constrains");
+    return;
+  }
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (!is_identifier(args[i]) || is_all_underscores(args[i])) {
+      diags_.add(DiagId::pragma_bad_keyword_rule, pragma.span, "invalid keyword name '" + args[i] + "' in a keyword_rule");
+      return;
+    }
+  }
+  space_.rules.push_back({kind->second, args[1], {args.begin() + 2, args.end()}, pragma.span});
+}
+
 void SpaceBuilder::report_unknown_directive(const ir::Pragma& pragma) {
   Diagnostic& d = diags_.add(DiagId::pragma_unknown_keyword_directive, pragma.span,
                              "unknown keyword pragma '" + pragma.name +
@@ -287,6 +310,18 @@ void SpaceBuilder::add_set(KeywordSet set) {
 }
 
 KeywordSpace SpaceBuilder::finish() {
+  // Rules may name keywords declared after them; a rule naming none is a typo.
+  for (const KeywordRule& rule : space_.rules) {
+    std::vector<std::string> named = rule.others;
+    named.push_back(rule.keyword);
+    for (const std::string& k : named) {
+      auto it = declared_.find(k);
+      if (it == declared_.end() || it->second.dynamic) {
+        diags_.add(DiagId::pragma_bad_keyword_rule, rule.span,
+                   "keyword_rule names '" + k + "', which no keyword pragma of this program declares");
+      }
+    }
+  }
   // Checked at the end: skip_variants may come before the declaration.
   for (const std::string& keyword : space_.skip_variants) {
     auto it = declared_.find(keyword);

@@ -168,7 +168,8 @@ Result<Selection> select_variant(const KeywordSpace& space, const KeywordList& m
                                  Diagnostics& diags) {
   Selection selection;
   EnabledKeywords enabled(space, selection);
-  enabled.add(material_keywords, global_keywords);
+  // keyword_rule implies: enabling A enables what it implies.
+  enabled.add(apply_implications(space, material_keywords), apply_implications(space, global_keywords));
   AllowedStates allowed = allowed_states(space, std::nullopt, true);
   std::optional<size_t> conflict = requested_key(space, allowed, enabled, selection.key);
   selection.exact = !conflict && is_available(selection.key, allowed, options);

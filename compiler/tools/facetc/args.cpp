@@ -18,7 +18,7 @@ namespace {
 struct RawArgs {
   std::vector<std::string> inputs, defines, include_dirs, passes, keywords, disabled_groups;
   std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage, report;
-  std::vector<std::string> material_files;
+  std::vector<std::string> material_files, strip_files;
   std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
   bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
@@ -53,7 +53,10 @@ void add_options(CLI::App& app, RawArgs& raw) {
       ->check(CLI::IsMember({"package", "ast", "ir", "variants"}));
   app.add_option("--report", raw.report, "the variant report of every input: text (default), json or html")
       ->check(CLI::IsMember({"text", "json", "html"}));
-  app.add_option("--materials", raw.material_files, "a material manifest (JSON) for the report's material rung")
+  app.add_option("--materials", raw.material_files,
+                 "a material manifest (JSON): only the shader_feature combinations its materials use")
+      ->allow_extra_args(false);
+  app.add_option("--strip", raw.strip_files, "a strip filter (JSON): deny/allow/always_on/always_off rules")
       ->allow_extra_args(false);
   app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable")->allow_extra_args(false);
   app.add_option("--stage", raw.stage, "vertex, fragment, geometry, hull or domain");
@@ -137,7 +140,11 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
     return "-o names one output file; give one input (or --out-dir for the packages of several)";
   }
   if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
-  if (!raw.material_files.empty() && args.mode != Mode::report) return "--materials goes with --report";
+  bool strips = args.mode == Mode::package || args.mode == Mode::report || args.mode == Mode::depfile_only ||
+                (args.mode == Mode::dump && args.dump == DumpKind::package);
+  if ((!raw.material_files.empty() || !raw.strip_files.empty()) && !strips) {
+    return "--materials and --strip apply to packages and --report";
+  }
   if (args.mode == Mode::report && (raw.write_depfile || args.keywords)) {
     return "--report covers every variant; -MD and --keywords do not apply";
   }
@@ -172,6 +179,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.max_variants = raw.max_variants;
   args.stats = raw.stats;
   args.material_files = raw.material_files;
+  args.strip_files = raw.strip_files;
   args.jobs = raw.jobs;
   if (!raw.no_cache) {
     const char* env = std::getenv("FACET_CACHE_DIR");

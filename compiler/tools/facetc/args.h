@@ -37,6 +37,7 @@ struct FacetcArgs {
   DumpKind dump = DumpKind::package;
   ReportFormat report = ReportFormat::text;
   std::vector<std::string> material_files;  // --materials: material manifests (docs/reports.md)
+  std::vector<std::string> strip_files;     // --strip: strip filters (docs/stripping.md)
   std::vector<std::string> inputs;
   std::string output;      // -o; "-" is standard output; "" = the mode's default
   std::string out_dir;     // --out-dir

@@ -5,6 +5,7 @@
 //                   "keywords": ["_EMISSION"], "properties": {"_Overlay": 1}}]}
 #include <fmt/format.h>
 
+#include "json_input.h"
 #include "report_mode.h"
 
 namespace facet::tools {
@@ -12,16 +13,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-// Manifest problems: the JSON path says where, since values carry no position.
-struct ManifestErrors {
-  FileId file;
-  Diagnostics& diags;
-  bool failed = false;
-  void add(const std::string& where, const std::string& what) {
-    diags.add(DiagId::materials_bad_manifest, SourceSpan{file, 0, 0}, fmt::format("{}: {}", where, what));
-    failed = true;
-  }
-};
+using ManifestErrors = JsonInputErrors;
 
 void read_material(const Json& m, const std::string& where, ManifestErrors& errors,
                    std::vector<ManifestMaterial>& out) {
@@ -54,55 +46,21 @@ void read_material(const Json& m, const std::string& where, ManifestErrors& erro
   out.push_back(std::move(mat));
 }
 
-// nlohmann's parser recurses per nesting level; refuse hostile depths first.
-std::optional<size_t> excessive_nesting(const std::string& text, int limit = 64) {
-  int depth = 0;
-  bool in_string = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > limit) return i;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 Result<std::vector<ManifestMaterial>> read_material_manifest(const std::string& path, SourceMap& sources,
                                                              Diagnostics& diags) {
-  auto text = read_file(path, kMaxShaderBytes, diags);
-  FACET_TRY(text);
-  FileId file = sources.add_file(path, *text);
-  if (auto at = excessive_nesting(*text)) {
-    diags.add(DiagId::materials_bad_manifest, SourceSpan{file, uint32_t(*at), uint32_t(*at) + 1},
-              "JSON nests more than 64 deep");
-    return failure("bad manifest");
-  }
-  Json doc;
-  try {
-    doc = Json::parse(*text);
-  } catch (const Json::parse_error& e) {
-    uint32_t at = e.byte > 0 ? uint32_t(std::min<size_t>(e.byte - 1, text->size())) : 0;
-    std::string what = e.what();
-    if (auto colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
-    diags.add(DiagId::materials_bad_manifest, SourceSpan{file, at, at + 1}, "invalid JSON: " + what);
-    return failure("bad manifest");
-  }
+  auto doc = read_json_input(path, sources, diags);
+  FACET_TRY(doc);
+  FileId file = doc->file;
   ManifestErrors errors{file, diags};
   std::vector<ManifestMaterial> out;
-  if (!doc.is_object() || !doc.contains("materials") || !doc["materials"].is_array()) {
+  const Json& root = doc->json;
+  if (!root.is_object() || !root.contains("materials") || !root["materials"].is_array()) {
     errors.add("$", "expected an object with a 'materials' array");
     return failure("bad manifest");
   }
-  const Json& list = doc["materials"];
+  const Json& list = root["materials"];
   for (size_t i = 0; i < list.size(); ++i) read_material(list[i], fmt::format("materials[{}]", i), errors, out);
   if (errors.failed) return failure("bad manifest");
   return out;

@@ -33,8 +33,10 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
   return out;
 }
 
-void show(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sources, Console& console,
-          nlohmann::json& json_diagnostics) {
+}  // namespace
+
+void show_diagnostics(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sources, Console& console,
+                      nlohmann::json& json_diagnostics) {
   Diagnostics diags = apply_warning_options(raw, args.warnings);
   if (args.diagnostics_format == DiagnosticsFormat::json) {
     for (auto& d : nlohmann::json::parse(render_json(diags, sources))) json_diagnostics.push_back(std::move(d));
@@ -43,7 +45,6 @@ void show(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sourc
   }
 }
 
-// The keyword lists of the manifest materials that use `shader`.
 std::vector<variants::KeywordList> material_keywords(const std::vector<ManifestMaterial>& materials,
                                                      const ir::Shader& shader) {
   std::vector<variants::KeywordList> out;
@@ -58,16 +59,26 @@ std::vector<variants::KeywordList> material_keywords(const std::vector<ManifestM
   return out;
 }
 
+CompileOptions stripped_options(CompileOptions options, const StripInputs& strip, const ir::Shader& shader) {
+  if (strip.materials) options.materials = material_keywords(*strip.materials, shader);
+  options.strip = strip.filter;
+  return options;
+}
+
+namespace {
+
 std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Compiler& compiler,
-                                               const std::string& path,
-                                               const std::optional<std::vector<ManifestMaterial>>& materials,
-                                               Console& console, nlohmann::json& json_diagnostics) {
+                                               const std::string& path, const StripInputs& strip, Console& console,
+                                               nlohmann::json& json_diagnostics) {
   SourceMap sources;
   Diagnostics diags;
   std::optional<report::ShaderReport> result;
   auto shader = compiler.load(path, sources, diags);
   if (shader) {
+    // Every variant after the keyword rules and the strip filter; the material
+    // rung is counted, not stripped, so that the report shows what it removes.
     CompileOptions options = compile_options(args, false);
+    options.strip = strip.filter;
     auto passes = compiler.select_passes(*shader, options, diags);
     std::optional<CompiledShader> compiled;
     if (passes) {
@@ -75,33 +86,22 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
     }
     if (compiled && !apply_warning_options(diags, args.warnings).has_errors()) {
       report::ReportOptions report_options;
-      if (materials) report_options.materials = material_keywords(*materials, *shader);
+      if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
       result = report::build_report(*shader, *passes, *compiled, sources, report_options);
     }
   }
-  show(args, diags, sources, console, json_diagnostics);
+  show_diagnostics(args, diags, sources, console, json_diagnostics);
   return result;
 }
 
 }  // namespace
 
-int run_report(const FacetcArgs& args, const Compiler& compiler, Console& console, nlohmann::json& json_diagnostics) {
-  std::optional<std::vector<ManifestMaterial>> materials;
+int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip, Console& console,
+               nlohmann::json& json_diagnostics) {
   bool failed = false;
-  if (!args.material_files.empty()) {
-    materials.emplace();
-    for (const std::string& file : args.material_files) {
-      SourceMap sources;
-      Diagnostics diags;
-      auto read = read_material_manifest(file, sources, diags);
-      show(args, diags, sources, console, json_diagnostics);
-      if (!read) return 1;
-      materials->insert(materials->end(), read->begin(), read->end());
-    }
-  }
   std::vector<report::ShaderReport> reports;
   for (const std::string& path : expand_inputs(args.inputs)) {
-    auto r = report_one(args, compiler, path, materials, console, json_diagnostics);
+    auto r = report_one(args, compiler, path, strip, console, json_diagnostics);
     if (r) reports.push_back(std::move(*r));
     failed |= !r;
   }
@@ -114,7 +114,7 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, Console& consol
   } else {
     Diagnostics diags;
     if (!write_file_atomically(args.output, text, diags)) {
-      show(args, diags, SourceMap{}, console, json_diagnostics);
+      show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
       return 1;
     }
   }

@@ -22,6 +22,25 @@ struct ManifestMaterial {
 Result<std::vector<ManifestMaterial>> read_material_manifest(const std::string& path, SourceMap& sources,
                                                              Diagnostics& diags);
 
-int run_report(const FacetcArgs& args, const Compiler& compiler, Console& console, nlohmann::json& json_diagnostics);
+// The stripping inputs of a run: --materials manifests and --strip filters.
+struct StripInputs {
+  std::optional<std::vector<ManifestMaterial>> materials;  // nullopt without --materials
+  variants::StripFilter filter;
+};
+
+// The keyword lists of the manifest materials that use `shader` (explicit
+// keywords plus those their property values imply).
+std::vector<variants::KeywordList> material_keywords(const std::vector<ManifestMaterial>& materials,
+                                                     const ir::Shader& shader);
+
+// Compile options with the stripping inputs applied for `shader`.
+CompileOptions stripped_options(CompileOptions options, const StripInputs& strip, const ir::Shader& shader);
+
+// Prints diagnostics as the run asks (text now, or into the JSON array).
+void show_diagnostics(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sources, Console& console,
+                      nlohmann::json& json_diagnostics);
+
+int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip, Console& console,
+               nlohmann::json& json_diagnostics);
 
 }  // namespace facet::tools

@@ -14,6 +14,7 @@
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
 #include "report_mode.h"
+#include "strip_filter.h"
 #include "units.h"
 
 namespace facet::tools {
@@ -63,16 +64,19 @@ Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compi
   return out;
 }
 
-Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader,
-                               const std::string& input, SourceMap& sources, Diagnostics& diags) {
-  auto compiled = compiler.compile(shader, compile_options(args, false), sources, diags);
+Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
+                               const ir::Shader& shader, const std::string& input, SourceMap& sources,
+                               Diagnostics& diags) {
+  auto compiled = compiler.compile(shader, stripped_options(compile_options(args, false), strip, shader), sources,
+                                   diags);
   FACET_TRY(compiled);
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
   const CompileStats& s = compiled->stats;
   Produced out{.bytes = std::string(bytes.begin(), bytes.end()), .output = package_output_path(args, input)};
-  out.stats = fmt::format("facetc: {}: {} passes, {} variants; programs {}, unique after preprocessing {} "
+  out.stats = fmt::format("facetc: {}: {} passes, {} variants ({} stripped); programs {}, unique after preprocessing {} "
                           "(compiled once each), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
-                          input, s.passes, s.variants, s.stage_programs, s.unique_preprocessed, s.unique_spirv,
+                          input, s.passes, s.variants, s.variants_stripped, s.stage_programs, s.unique_preprocessed,
+                          s.unique_spirv,
                           bytes.size(), s.seconds, s.jobs);
   if (!args.cache_dir.empty()) {
     out.stats += fmt::format("facetc: {}: cache: local hits {} / compiled {}{}; {} of {} programs not preprocessed "
@@ -97,8 +101,8 @@ Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags)
   return Produced{.bytes = package::package_to_json(*pkg)};
 }
 
-Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const std::string& input,
-                         SourceMap& sources, Diagnostics& diags) {
+Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
+                         const std::string& input, SourceMap& sources, Diagnostics& diags) {
   if (args.mode == Mode::dump && is_package_file(input)) return dump_package_file(input, diags);
   if (args.mode == Mode::dump && args.dump == DumpKind::ast) {
     auto text = read_file(input, kMaxShaderBytes, diags);
@@ -112,11 +116,11 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
   switch (args.mode) {
     case Mode::package:
     case Mode::depfile_only:
-      return build_package(args, compiler, *shader, input, sources, diags);
+      return build_package(args, compiler, strip, *shader, input, sources, diags);
     case Mode::dump:
       if (args.dump == DumpKind::ir) return Produced{.bytes = sema::ir_to_json(*shader), .output = args.output};
       if (args.dump == DumpKind::package) {
-        auto built = build_package(args, compiler, *shader, input, sources, diags);
+        auto built = build_package(args, compiler, strip, *shader, input, sources, diags);
         FACET_TRY(built);
         built->output = args.output;
         return built;
@@ -178,22 +182,41 @@ bool write_outputs(const FacetcArgs& args, const std::string& input, const Produ
   return bool(write_file_atomically(depfile, rule, diags));
 }
 
-bool use_color(const FacetcArgs& args) { return args.color.value_or(isatty(STDERR_FILENO) == 1); }
+// --materials and --strip, read once for every input.
+std::optional<StripInputs> read_strip_inputs(const FacetcArgs& args, Console& console, nlohmann::json& json_diags) {
+  StripInputs inputs;
+  bool ok = true;
+  if (!args.material_files.empty()) inputs.materials.emplace();
+  for (const std::string& file : args.material_files) {
+    SourceMap sources;
+    Diagnostics diags;
+    auto read = read_material_manifest(file, sources, diags);
+    show_diagnostics(args, diags, sources, console, json_diags);
+    if (read) inputs.materials->insert(inputs.materials->end(), read->begin(), read->end());
+    ok = ok && read;
+  }
+  for (const std::string& file : args.strip_files) {
+    SourceMap sources;
+    Diagnostics diags;
+    auto read = read_strip_filter(file, sources, diags);
+    show_diagnostics(args, diags, sources, console, json_diags);
+    if (read) inputs.filter.rules.insert(inputs.filter.rules.end(), read->rules.begin(), read->rules.end());
+    ok = ok && read;
+  }
+  if (!ok) return std::nullopt;
+  return inputs;
+}
 
 // One input, start to end. Returns its exit code.
-int process_input(const FacetcArgs& args, const Compiler& compiler, const std::string& input, Console& console,
-                  nlohmann::json& json_diagnostics) {
+int process_input(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
+                  const std::string& input, Console& console, nlohmann::json& json_diagnostics) {
   SourceMap sources;
   Diagnostics raw;
-  Result<Produced> produced = produce(args, compiler, input, sources, raw);
+  Result<Produced> produced = produce(args, compiler, strip, input, sources, raw);
   Diagnostics diags = apply_warning_options(raw, args.warnings);
   bool ok = produced && !produced->usage_error && !diags.has_errors();
   if (ok && !write_outputs(args, input, *produced, sources, console, diags)) ok = false;
-  if (args.diagnostics_format == DiagnosticsFormat::json) {
-    for (auto& d : nlohmann::json::parse(render_json(diags, sources))) json_diagnostics.push_back(std::move(d));
-  } else {
-    console.err << render_text(diags, sources, {.color = use_color(args)});
-  }
+  show_diagnostics(args, diags, sources, console, json_diagnostics);
   if (ok && args.stats) console.err << produced->stats;
   if (produced && produced->usage_error) return 2;
   return ok ? 0 : 1;
@@ -213,13 +236,18 @@ int run_facetc(const FacetcArgs& args, Console& console) {
   Compiler compiler;
   nlohmann::json json_diagnostics = nlohmann::json::array();
   int exit_code = 0;
+  auto strip = read_strip_inputs(args, console, json_diagnostics);
+  if (!strip) {
+    if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
+    return 1;
+  }
   if (args.mode == Mode::report) {
-    exit_code = run_report(args, compiler, console, json_diagnostics);
+    exit_code = run_report(args, compiler, *strip, console, json_diagnostics);
     if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
     return exit_code;
   }
   for (const std::string& input : args.inputs) {
-    exit_code = std::max(exit_code, process_input(args, compiler, input, console, json_diagnostics));
+    exit_code = std::max(exit_code, process_input(args, compiler, *strip, input, console, json_diagnostics));
   }
   if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
   return exit_code;

@@ -53,6 +53,8 @@ TEST(ReportLadderTest, KeywordsShaderHasTheFullLadder) {
   EXPECT_EQ(ladder(p, "pass").full, BigCount(48));
   EXPECT_EQ(ladder(p, "pass").after_skip, BigCount(48));
   EXPECT_EQ(ladder(p, "pass").programs, 64u);
+  EXPECT_EQ(ladder(p, "pass").after_strip, 48u);
+  EXPECT_EQ(ladder(p, "vertex").after_strip, 16u);
   const Ladder& vs = ladder(p, "vertex");
   EXPECT_EQ(vs.full, BigCount(16));  // the overlay set is fragment-only
   EXPECT_EQ(vs.programs, 16u);
