@@ -64,6 +64,11 @@ struct CompileOptions {
   std::optional<std::vector<variants::KeywordList>> materials;
   variants::StripFilter strip;
   std::function<bool(const VariantInfo&)> variant_filter;
+  // Build only shard `shard_index` of `shard_count` (facetc --shard i/N):
+  // every N-th variant over the passes in order, so that the shards' packages
+  // merge (package::merge_packages) into the unsharded package.
+  uint32_t shard_index = 0;
+  uint32_t shard_count = 1;
 };
 
 // What a compile did, rung by rung of the dedupe ladder.

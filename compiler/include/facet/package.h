@@ -86,6 +86,14 @@ bool validate_package(const Package& package, Diagnostics& diags);
 // PackageStage::blob; blobs keep the order of their first reference.
 void deduplicate_blobs(Package& package);
 
+// Joins packages built as shards of one build (facetc --shard i/N) into the
+// package the unsharded build gives, byte for byte: the shards must come
+// from the same shader with the same passes and keyword spaces; their
+// variants are united by key (a key in two shards must have identical
+// stages) and the SPIR-V stored once in first-use order. Mismatches are
+// package_merge_mismatch errors naming what differs.
+Result<Package> merge_packages(const std::vector<Package>& shards, Diagnostics& diags);
+
 // A stable JSON view of the whole package (SPIR-V as word counts + hashes);
 // keys in a fixed order, documented in docs/package-format.md.
 std::string package_to_json(const Package& package);

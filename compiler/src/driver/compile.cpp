@@ -286,11 +286,16 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
 
   bool failed = false;
   std::vector<std::vector<variants::VariantKey>> keys;
-  uint64_t stripped = 0;
+  uint64_t stripped = 0, variant_index = 0;
   for (const SelectedPass& sel : *passes) {
     auto k = select_variants(sel, options, diags, &stripped);
     if (!k) failed = true;
     keys.push_back(k ? std::move(*k) : std::vector<variants::VariantKey>{});
+    if (options.shard_count > 1) {
+      std::erase_if(keys.back(), [&](const variants::VariantKey&) {
+        return variant_index++ % options.shard_count != options.shard_index;
+      });
+    }
   }
   Plan plan = plan_tasks(*passes, std::move(keys));
   const unsigned jobs = worker_count(options.jobs);

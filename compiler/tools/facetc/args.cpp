@@ -25,7 +25,8 @@ struct RawArgs {
   bool depfile_only = false, write_depfile = false, stats = false, version = false;
   uint64_t max_variants = 65536;
   unsigned jobs = 0;
-  std::string cache_dir;
+  std::string cache_dir, shard;
+  bool merge = false;
   bool no_cache = false;
 };
 
@@ -76,6 +77,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--MF", raw.depfile, "the depfile's path (also -MF)");
   app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
   app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
+  app.add_option("--shard", raw.shard, "build shard i of N (every N-th variant), e.g. 0/4; join with --merge");
+  app.add_flag("--merge", raw.merge, "join the .facetpkg files of --shard builds into the package of -o");
   app.add_option("--cache-dir", raw.cache_dir, "the compile cache folder (default: $FACET_CACHE_DIR, else none)");
   app.add_flag("--no-cache", raw.no_cache, "neither read nor write the compile cache");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
@@ -113,7 +116,7 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       {raw.preprocess, Mode::preprocess},       {raw.assemble || !raw.emit.empty(), Mode::emit},
       {raw.reflect, Mode::reflect},             {raw.list_variants, Mode::list_variants},
       {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only},
-      {!raw.report.empty(), Mode::report}};
+      {!raw.report.empty(), Mode::report},     {raw.merge, Mode::merge}};
   int chosen = 0;
   for (auto [on, mode] : modes) {
     if (on) {
@@ -121,7 +124,9 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       ++chosen;
     }
   }
-  if (chosen > 1) return "-E, -S/--emit, --reflect, --list-variants, --dump, --report and -M exclude each other";
+  if (chosen > 1) {
+    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge and -M exclude each other";
+  }
   args.report = raw.report == "json" ? ReportFormat::json : raw.report == "html" ? ReportFormat::html
                                                                                    : ReportFormat::text;
   static const std::map<std::string, EmitKind> emits = {{"", EmitKind::spirv_asm},
@@ -136,7 +141,8 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
 
 std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
   if (args.inputs.empty()) return "no input files";
-  if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report) {
+  if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report &&
+      args.mode != Mode::merge) {
     return "-o names one output file; give one input (or --out-dir for the packages of several)";
   }
   if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
@@ -165,6 +171,8 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
     return "-MD writes <output>.d; name the output with -o or the depfile with -MF";
   }
   if (!raw.depfile.empty() && args.inputs.size() > 1) return "-MF names one depfile; give one input";
+  if (args.mode == Mode::merge && (args.output.empty() || args.output == "-")) return "--merge writes the file -o names";
+  if (args.shard_count > 1 && args.mode != Mode::package) return "--shard applies to package builds";
   return std::nullopt;
 }
 
@@ -186,6 +194,16 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
     args.cache_dir = !raw.cache_dir.empty() ? raw.cache_dir : env ? env : "";
   }
   if (!raw.keywords.empty()) args.keywords = split_keywords(raw.keywords);
+  if (!raw.shard.empty()) {
+    unsigned i = 0, n = 0;
+    char slash = 0;
+    std::istringstream in(raw.shard);
+    if (!(in >> i >> slash >> n) || slash != '/' || n == 0 || i >= n || !in.eof()) {
+      error = "--shard takes i/N with 0 <= i < N, e.g. 0/4";
+    }
+    args.shard_index = i;
+    args.shard_count = n == 0 ? 1 : n;
+  }
   if (!raw.stage.empty()) {
     args.stage = parse_stage(raw.stage);
     if (!args.stage) error = fmt::format("unknown stage '{}'; use vertex, fragment, geometry, hull or domain", raw.stage);

@@ -21,6 +21,7 @@ enum class Mode {
   dump,           // --dump[=package|ast|ir|variants]
   depfile_only,   // -M: the make rule of every file the build reads, nothing else
   report,         // --report[=text|json|html]: the variant report of every input (docs/reports.md)
+  merge,          // --merge: join the packages of --shard builds into one
 };
 
 enum class ReportFormat { text, json, html };
@@ -57,6 +58,7 @@ struct FacetcArgs {
   std::string dep_target;
   bool stats = false;
   unsigned jobs = 0;  // -j N; 0: one per core
+  uint32_t shard_index = 0, shard_count = 1;  // --shard i/N
   std::string cache_dir;  // --cache-dir, else $FACET_CACHE_DIR; "" (or --no-cache): none
 };
 

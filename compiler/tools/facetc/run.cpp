@@ -89,7 +89,8 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   return out;
 }
 
-Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags) {
+// Reads and validates a .facetpkg; its problems name the file.
+Result<package::Package> read_package_file(const std::string& input, Diagnostics& diags) {
   auto bytes = read_file(input, kMaxPackageBytes, diags);
   FACET_TRY(bytes);
   auto pkg = package::read_package(
@@ -98,6 +99,12 @@ Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags)
     for (Diagnostic& d : diags.mutable_all()) d.message = input + ": " + d.message;
     return failure("corrupt package");
   }
+  return pkg;
+}
+
+Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags) {
+  auto pkg = read_package_file(input, diags);
+  FACET_TRY(pkg);
   return Produced{.bytes = package::package_to_json(*pkg)};
 }
 
@@ -132,6 +139,7 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
       return Produced{.bytes = std::move(*text), .output = args.output};
     }
     case Mode::report:  // run_report handles it
+    case Mode::merge:   // run_merge handles it
     case Mode::preprocess:
     case Mode::emit:
     case Mode::reflect: {
@@ -222,6 +230,27 @@ int process_input(const FacetcArgs& args, const Compiler& compiler, const StripI
   return ok ? 0 : 1;
 }
 
+// --merge: read every shard, join them, write -o.
+int run_merge(const FacetcArgs& args, Console& console, nlohmann::json& json_diagnostics) {
+  std::vector<package::Package> shards;
+  SourceMap none;
+  for (const std::string& input : args.inputs) {
+    Diagnostics diags;
+    auto pkg = read_package_file(input, diags);
+    show_diagnostics(args, diags, none, console, json_diagnostics);
+    if (!pkg) return 1;
+    shards.push_back(std::move(*pkg));
+  }
+  Diagnostics diags;
+  auto merged = package::merge_packages(shards, diags);
+  bool ok = merged && write_file_atomically(args.output, [&] {
+    std::vector<uint8_t> bytes = package::write_package(*merged);
+    return std::string(bytes.begin(), bytes.end());
+  }(), diags);
+  show_diagnostics(args, diags, none, console, json_diagnostics);
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int run_facetc(const FacetcArgs& args, Console& console) {
@@ -240,6 +269,11 @@ int run_facetc(const FacetcArgs& args, Console& console) {
   if (!strip) {
     if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
     return 1;
+  }
+  if (args.mode == Mode::merge) {
+    exit_code = run_merge(args, console, json_diagnostics);
+    if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
+    return exit_code;
   }
   if (args.mode == Mode::report) {
     exit_code = run_report(args, compiler, *strip, console, json_diagnostics);

@@ -119,6 +119,8 @@ CompileOptions compile_options(const FacetcArgs& args, bool one_variant_by_defau
   CompileOptions options{.backend = args.backend, .passes = args.passes, .strict_selection = args.strict_variants,
                          .max_variants_per_pass = args.max_variants,
                          .jobs = args.jobs, .cache_dir = args.cache_dir};
+  options.shard_index = args.shard_index;
+  options.shard_count = args.shard_count;
   if (args.keywords) {
     options.keywords = *args.keywords;
   } else if (one_variant_by_default && !args.all_variants) {

@@ -229,3 +229,31 @@ TEST_F(FacetcTest, CorruptPackageIsAnErrorNotACrash) {
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+TEST_F(FacetcTest, ShardsMergeIntoTheUnshardedPackage) {
+  ASSERT_EQ(facetc({example("PhongMultiLight.shader"), "-o", "full.facetpkg"}).exit_code, 0);
+  for (int i = 0; i < 3; ++i) {
+    FacetcRun shard = facetc({example("PhongMultiLight.shader"), "--shard", std::to_string(i) + "/3", "-o",
+                              "s" + std::to_string(i) + ".facetpkg"});
+    ASSERT_EQ(shard.exit_code, 0) << shard.err;
+  }
+  EXPECT_FALSE(read_all(dir_ / "s0.facetpkg") == read_all(dir_ / "full.facetpkg"));
+  FacetcRun merge = facetc({"--merge", "s2.facetpkg", "s0.facetpkg", "s1.facetpkg", "-o", "merged.facetpkg"});
+  ASSERT_EQ(merge.exit_code, 0) << merge.err;
+  EXPECT_TRUE(read_all(dir_ / "merged.facetpkg") == read_all(dir_ / "full.facetpkg")) << "byte-identical";
+
+  ASSERT_EQ(facetc({example("Unlit.shader"), "-o", "other.facetpkg"}).exit_code, 0);
+  FacetcRun mismatch = facetc({"--merge", "s0.facetpkg", "other.facetpkg", "-o", "bad.facetpkg"});
+  EXPECT_EQ(mismatch.exit_code, 1);
+  EXPECT_THAT(mismatch.err, ::testing::HasSubstr("is not of the same build"));
+  EXPECT_FALSE(fs::exists(dir_ / "bad.facetpkg"));
+  for (std::string bad : {"3/3", "1/0", "x/2", "1-2"}) {
+    EXPECT_EQ(facetc({example("Unlit.shader"), "--shard", bad}).exit_code, 2) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
