@@ -69,6 +69,9 @@ struct CompileOptions {
   // merge (package::merge_packages) into the unsharded package.
   uint32_t shard_index = 0;
   uint32_t shard_count = 1;
+  // Called as programs finish (done, total), from worker threads but never
+  // two at once; for progress bars.
+  std::function<void(uint64_t done, uint64_t total)> progress;
 };
 
 // What a compile did, rung by rung of the dedupe ladder.

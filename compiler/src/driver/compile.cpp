@@ -355,7 +355,20 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     if (plan.tasks[i].compiled_by == i) to_compile.push_back(i);
   }
   std::atomic<uint64_t> hits{0}, corrupt{0};
+  std::mutex progress_mutex;
+  uint64_t finished = 0;
+  auto report_progress = [&] {
+    if (!options.progress) return;
+    std::lock_guard lock(progress_mutex);
+    options.progress(++finished, to_compile.size());
+  };
   parallel_for_each(to_compile.size(), jobs, [&](size_t n) {
+    struct Done {  // reports the program finished on every way out
+      const std::function<void()>& report;
+      ~Done() { report(); }
+    };
+    const std::function<void()> report = report_progress;
+    Done done{report};
     StageTask& t = plan.tasks[to_compile[n]];
     const SelectedPass& sel = (*passes)[t.pass];
     StageEntry& e = t.entry;

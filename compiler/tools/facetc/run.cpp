@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "facet/compiler.h"
 #include "facet/package.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "progress.h"
 #include "report_mode.h"
 #include "strip_filter.h"
 #include "units.h"
@@ -67,8 +69,12 @@ Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compi
 Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
                                const ir::Shader& shader, const std::string& input, SourceMap& sources,
                                Diagnostics& diags) {
-  auto compiled = compiler.compile(shader, stripped_options(compile_options(args, false), strip, shader), sources,
-                                   diags);
+  CompileOptions options = stripped_options(compile_options(args, false), strip, shader);
+  // A bar only for people: on a terminal, with text diagnostics.
+  ProgressBar bar(std::cerr, isatty(STDERR_FILENO) == 1 && args.diagnostics_format == DiagnosticsFormat::text);
+  options.progress = [&](uint64_t done, uint64_t total) { bar.update(done, total); };
+  auto compiled = compiler.compile(shader, options, sources, diags);
+  bar.finish();
   FACET_TRY(compiled);
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
   const CompileStats& s = compiled->stats;

@@ -257,3 +257,25 @@ TEST_F(FacetcTest, ShardsMergeIntoTheUnshardedPackage) {
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+TEST_F(FacetcTest, ProgressBarOnlyOnATerminal) {
+  FacetcRun piped = facetc({example("Keywords.shader"), "-o", "a.facetpkg"});
+  ASSERT_EQ(piped.exit_code, 0);
+  EXPECT_EQ(piped.err, "") << "no progress bar when stderr is not a terminal";
+  // script(1) gives facetc a pseudo-terminal.
+  std::string command = "cd " + shell_quote(dir_.string()) + " && script -qec " +
+                        shell_quote(shell_quote(FACETC_PATH) + " " + shell_quote(example("Keywords.shader")) +
+                                    " -o b.facetpkg") +
+                        " /dev/null > tty.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::string tty = read_all(dir_ / "tty.txt");
+  EXPECT_THAT(tty, ::testing::HasSubstr("] 50/50 programs"));
+  EXPECT_THAT(tty, ::testing::HasSubstr("\r"));
+  EXPECT_TRUE(read_all(dir_ / "a.facetpkg") == read_all(dir_ / "b.facetpkg"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
