@@ -8,6 +8,7 @@
 //
 //   facet_variant_bench --facetc build/compiler/facetc [--glslc glslc] [--work DIR]
 //                       [--naive-every K]   (time every K-th variant only, and scale up)
+//                       [--parallel N]      (the parallel rows use N threads / processes; default 2)
 #include <fmt/format.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -34,6 +35,7 @@ namespace {
 struct Options {
   std::string facetc, glslc = "glslc", work;
   unsigned naive_every = 1;
+  unsigned parallel = 2;  // the parallel runs: facetc -jN and N glslc processes at a time
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -145,6 +147,7 @@ std::optional<Options> parse(int argc, char** argv) {
     else if (a == "--glslc") o.glslc = value();
     else if (a == "--work") o.work = value();
     else if (a == "--naive-every") o.naive_every = unsigned(std::max(1, std::atoi(value().c_str())));
+    else if (a == "--parallel") o.parallel = unsigned(std::max(2, std::atoi(value().c_str())));
     else return std::nullopt;
   }
   if (o.facetc.empty()) return std::nullopt;
@@ -174,9 +177,10 @@ int main(int argc, char** argv) {
 
   std::cout << "uber shader: " << uber << "\n";
   double cold1 = timed(facetc + quote((w / "j1.facetpkg").string()) + " -j1 --no-cache");
-  double cold2 = timed(facetc + quote((w / "j2.facetpkg").string()) + " -j2 --no-cache");
-  double cache_cold = timed(facetc + quote((w / "c.facetpkg").string()) + " -j2 --cache-dir " + quote((w / "cache").string()));
-  double warm = timed(facetc + quote((w / "w.facetpkg").string()) + " -j2 --cache-dir " + quote((w / "cache").string()));
+  const std::string jn = fmt::format(" -j{}", o.parallel);
+  double cold2 = timed(facetc + quote((w / "j2.facetpkg").string()) + jn + " --no-cache");
+  double cache_cold = timed(facetc + quote((w / "c.facetpkg").string()) + jn + " --cache-dir " + quote((w / "cache").string()));
+  double warm = timed(facetc + quote((w / "w.facetpkg").string()) + jn + " --cache-dir " + quote((w / "cache").string()));
   if (cold1 < 0 || cold2 < 0 || cache_cold < 0 || warm < 0) {
     std::cerr << "facetc failed on the uber shader\n";
     return 1;
@@ -194,7 +198,7 @@ int main(int argc, char** argv) {
   bool naive_ok = run_jobs(plan->jobs, 1);
   double naive1 = seconds_since(start) * scale;
   start = Clock::now();
-  naive_ok = run_jobs(plan->jobs, 2) && naive_ok;
+  naive_ok = run_jobs(plan->jobs, o.parallel) && naive_ok;
   double naive2 = seconds_since(start) * scale;
   if (!naive_ok) {
     std::cerr << "a glslc invocation failed\n";
@@ -214,16 +218,17 @@ int main(int argc, char** argv) {
   std::string sampled = o.naive_every > 1 ? fmt::format("(every {}th variant timed, scaled x{:.1f})", o.naive_every, scale) : "";
   std::cout << fmt::format("\n{} glslc runs for the naive loop; seconds and ratio to facetc cold -j1\n", plan->all);
   row("facetc cold -j1 (no cache)", cold1, cold1);
-  row("facetc cold -j2 (no cache)", cold2, cold1);
-  row("facetc cold -j2 into an empty cache", cache_cold, cold1);
-  row("facetc warm -j2 from the cache", warm, cold1);
+  const unsigned n = o.parallel;
+  row(fmt::format("facetc cold -j{} (no cache)", n), cold2, cold1);
+  row(fmt::format("facetc cold -j{} into an empty cache", n), cache_cold, cold1);
+  row(fmt::format("facetc warm -j{} from the cache", n), warm, cold1);
   row("naive glslc loop, one at a time", naive1, cold1, sampled);
-  row("naive glslc loop, two at a time", naive2, cold1, sampled);
+  row(fmt::format("naive glslc loop, {} at a time", n), naive2, cold1, sampled);
   row("parse + enumerate 300 shaders (--list-variants)", corpus_time, cold1);
   std::cout << fmt::format("\nnaive (1 at a time) / facetc cold -j1: {:.1f}x\n", naive1 / cold1);
-  std::cout << fmt::format("naive (2 at a time) / facetc cold -j2: {:.1f}x\n", naive2 / cold2);
-  std::cout << fmt::format("warm / cold (-j2, cache): {:.1f}%\n", 100 * warm / cache_cold);
+  std::cout << fmt::format("naive ({} at a time) / facetc cold -j{}: {:.1f}x\n", n, n, naive2 / cold2);
+  std::cout << fmt::format("warm / cold (-j{}, cache): {:.1f}%\n", n, 100 * warm / cache_cold);
   std::cout << fmt::format("corpus: {:.1f} ms per shader\n", 1000 * corpus_time / 300);
-  std::cout << fmt::format("packages byte-identical for -j1, -j2 and warm: {}\n", identical ? "yes" : "NO");
+  std::cout << fmt::format("packages byte-identical for -j1, -j{} and warm: {}\n", n, identical ? "yes" : "NO");
   return identical ? 0 : 1;
 }
