@@ -79,4 +79,41 @@ class LocalCache {
   std::string dir_;
 };
 
+// A shared cache server speaking the bazel-remote HTTP layout
+// (github.com/buchgr/bazel-remote): the entry bytes are stored under
+// /cas/<sha256 of the bytes>, and /ac/<sha256 of the facet key> holds that
+// digest as 64 hex digits. bazel-remote needs --disable_http_ac_validation,
+// since the action-cache values are not Bazel ActionResults. Every failure
+// (server down, 404, timeout, a body whose SHA-256 is not its name) is a
+// miss; a cache never fails a build.
+//
+//   cache::HttpCache remote("http://cache.example:8080");
+class HttpCache {
+ public:
+  explicit HttpCache(std::string base_url, long timeout_ms = 10000);
+  const std::string& url() const { return base_url_; }
+
+  std::optional<std::string> load_bytes(const std::string& key) const;
+  bool store_bytes(const std::string& key, std::string_view bytes) const;
+
+ private:
+  std::string base_url_;  // without a trailing '/'
+  long timeout_ms_;
+};
+
+// Lower-case hex SHA-256 (the bazel-remote digest).
+std::string sha256_hex(std::string_view bytes);
+
+// The caches a build uses: the local folder first, then the server; a
+// remote hit is written to the local folder, a store goes to both.
+struct CacheStores {
+  std::optional<LocalCache> local;
+  std::optional<HttpCache> remote;
+
+  bool any() const { return local || remote; }
+  // `remote_hit` tells whether the bytes came from the server.
+  std::optional<std::string> load_bytes(const std::string& key, bool* remote_hit = nullptr) const;
+  void store_bytes(const std::string& key, std::string_view bytes) const;
+};
+
 }  // namespace facet::cache

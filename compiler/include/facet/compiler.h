@@ -56,6 +56,10 @@ struct CompileOptions {
   unsigned jobs = 0;
   // The compile cache folder (facet/cache.h); empty: no cache.
   std::string cache_dir;
+  // A shared cache server (bazel-remote layout, facet/cache.h), e.g.
+  // "http://cache:8080"; empty: none. With cache_dir too, the folder is
+  // tried first and remote hits are copied into it.
+  std::string cache_url;
   // Stripping (docs/stripping.md), applied after skip_variants and the
   // shader's keyword_rule pragmas: the keyword lists of the materials that
   // use the shader (the shader_feature rule made explicit; nullopt: every
@@ -83,6 +87,7 @@ struct CompileStats {
   uint64_t unique_preprocessed = 0; // distinct preprocessed texts among them: compiled once each
   uint64_t unique_spirv = 0;        // distinct SPIR-V blobs stored
   uint64_t cache_hits = 0;          // unique programs served by the cache
+  uint64_t cache_remote_hits = 0;   // of cache_hits, served by the cache server
   uint64_t cache_corrupt = 0;       // cache entries that failed their checks (recompiled)
   uint64_t preprocess_skipped = 0;  // programs whose include manifest was current (direct mode)
   uint64_t compiled = 0;            // unique programs glslang compiled

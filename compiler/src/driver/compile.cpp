@@ -300,8 +300,10 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   Plan plan = plan_tasks(*passes, std::move(keys));
   const unsigned jobs = worker_count(options.jobs);
 
-  std::optional<cache::LocalCache> store;
-  if (!options.cache_dir.empty()) store.emplace(options.cache_dir);
+  cache::CacheStores stores;
+  if (!options.cache_dir.empty()) stores.local.emplace(options.cache_dir);
+  if (!options.cache_url.empty()) stores.remote.emplace(options.cache_url);
+  const bool store = stores.any();
   FileHashes file_hashes;
   std::atomic<uint64_t> manifest_hits{0};
   parallel_for_each(plan.tasks.size(), jobs, [&](size_t i) {
@@ -315,7 +317,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
       auto assembled = backend_.source_text(shader, program, t.stage, t.keywords, options.backend, false, sources,
                                             ignored);
       manifest_key = hex_key(context + search_context(shader, options.backend, sources), *assembled);
-      if (auto bytes = store->load_bytes(manifest_key)) {
+      if (auto bytes = stores.load_bytes(manifest_key)) {
         auto manifest = cache::decode_manifest(*bytes);
         if (manifest && file_hashes.unchanged(manifest->files)) {
           t.preprocessed = true;
@@ -345,7 +347,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
       for (const std::string& path : included) {
         if (auto h = file_hashes.of(path)) manifest.files.emplace_back(path, *h);
       }
-      if (manifest.files.size() == included.size()) (void)store->store_bytes(manifest_key, cache::encode_manifest(manifest));
+      if (manifest.files.size() == included.size()) stores.store_bytes(manifest_key, cache::encode_manifest(manifest));
     }
   });
   size_t compiling = assign_compilers(*passes, plan.tasks);
@@ -354,7 +356,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   for (size_t i = 0; i < plan.tasks.size(); ++i) {
     if (plan.tasks[i].compiled_by == i) to_compile.push_back(i);
   }
-  std::atomic<uint64_t> hits{0}, corrupt{0};
+  std::atomic<uint64_t> hits{0}, corrupt{0}, remote_hits{0};
   std::mutex progress_mutex;
   uint64_t finished = 0;
   auto report_progress = [&] {
@@ -375,10 +377,14 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     auto begin = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     if (store && !t.cache_key.empty()) {
-      cache::LoadResult cached = store->load(t.cache_key);
+      bool from_remote = false;
+      std::optional<std::string> bytes = stores.load_bytes(t.cache_key, &from_remote);
+      std::optional<cache::CacheEntry> cached_entry = bytes ? cache::decode_entry(*bytes) : std::nullopt;
+      cache::LoadResult cached{std::move(cached_entry), bytes.has_value() && !cached_entry};
       corrupt += cached.corrupt;
       if (cached.entry) {
         ++hits;
+        remote_hits += from_remote;
         e.ok = e.cache_hit = true;
         e.seconds = elapsed();
         e.spirv = std::move(cached.entry->spirv);
@@ -397,7 +403,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
     e.included_files = std::move(compiled->included_files);
     // Only clean compiles are stored: a hit replays no diagnostics.
     if (store && !t.cache_key.empty() && e.diags.size() == 0) {
-      (void)store->store(t.cache_key, {e.spirv, e.reflection, e.included_files});
+      stores.store_bytes(t.cache_key, cache::encode_entry({e.spirv, e.reflection, e.included_files}));
     }
   });
 
@@ -456,6 +462,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.variants_stripped = stripped;
   out.stats.unique_preprocessed = compiling;
   out.stats.cache_hits = hits;
+  out.stats.cache_remote_hits = remote_hits;
   out.stats.preprocess_skipped = manifest_hits;
   out.stats.cache_corrupt = corrupt;
   out.stats.compiled = to_compile.size() - hits;

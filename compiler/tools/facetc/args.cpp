@@ -25,7 +25,7 @@ struct RawArgs {
   bool depfile_only = false, write_depfile = false, stats = false, version = false;
   uint64_t max_variants = 65536;
   unsigned jobs = 0;
-  std::string cache_dir, shard;
+  std::string cache_dir, cache_url, shard;
   bool merge = false;
   bool no_cache = false;
 };
@@ -80,6 +80,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--shard", raw.shard, "build shard i of N (every N-th variant), e.g. 0/4; join with --merge");
   app.add_flag("--merge", raw.merge, "join the .facetpkg files of --shard builds into the package of -o");
   app.add_option("--cache-dir", raw.cache_dir, "the compile cache folder (default: $FACET_CACHE_DIR, else none)");
+  app.add_option("--remote-cache", raw.cache_url,
+                 "a shared cache server, bazel-remote HTTP layout (default: $FACET_REMOTE_CACHE)");
   app.add_flag("--no-cache", raw.no_cache, "neither read nor write the compile cache");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
   app.add_flag("--version", raw.version, "print the version and exit");
@@ -192,6 +194,8 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   if (!raw.no_cache) {
     const char* env = std::getenv("FACET_CACHE_DIR");
     args.cache_dir = !raw.cache_dir.empty() ? raw.cache_dir : env ? env : "";
+    const char* remote = std::getenv("FACET_REMOTE_CACHE");
+    args.cache_url = !raw.cache_url.empty() ? raw.cache_url : remote ? remote : "";
   }
   if (!raw.keywords.empty()) args.keywords = split_keywords(raw.keywords);
   if (!raw.shard.empty()) {

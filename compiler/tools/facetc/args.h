@@ -60,6 +60,7 @@ struct FacetcArgs {
   unsigned jobs = 0;  // -j N; 0: one per core
   uint32_t shard_index = 0, shard_count = 1;  // --shard i/N
   std::string cache_dir;  // --cache-dir, else $FACET_CACHE_DIR; "" (or --no-cache): none
+  std::string cache_url;  // --remote-cache, else $FACET_REMOTE_CACHE; "" (or --no-cache): none
 };
 
 // What parse_args decided: run with these arguments, or print `text` and

@@ -84,10 +84,10 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
                           input, s.passes, s.variants, s.variants_stripped, s.stage_programs, s.unique_preprocessed,
                           s.unique_spirv,
                           bytes.size(), s.seconds, s.jobs);
-  if (!args.cache_dir.empty()) {
-    out.stats += fmt::format("facetc: {}: cache: local hits {} / compiled {}{}; {} of {} programs not preprocessed "
-                             "(include manifests current)\n",
-                             input, s.cache_hits, s.compiled,
+  if (!args.cache_dir.empty() || !args.cache_url.empty()) {
+    out.stats += fmt::format("facetc: {}: cache: local hits {} / remote hits {} / compiled {}{}; {} of {} programs "
+                             "not preprocessed (include manifests current)\n",
+                             input, s.cache_hits - s.cache_remote_hits, s.cache_remote_hits, s.compiled,
                              s.cache_corrupt ? fmt::format(" ({} corrupt entries recompiled)", s.cache_corrupt) : "",
                              s.preprocess_skipped, s.stage_programs);
   }

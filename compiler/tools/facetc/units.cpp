@@ -118,7 +118,8 @@ std::string text_document(const FacetcArgs& args, const std::vector<Unit>& units
 CompileOptions compile_options(const FacetcArgs& args, bool one_variant_by_default) {
   CompileOptions options{.backend = args.backend, .passes = args.passes, .strict_selection = args.strict_variants,
                          .max_variants_per_pass = args.max_variants,
-                         .jobs = args.jobs, .cache_dir = args.cache_dir};
+                         .jobs = args.jobs, .cache_dir = args.cache_dir,
+                         .cache_url = args.cache_url};
   options.shard_index = args.shard_index;
   options.shard_count = args.shard_count;
   if (args.keywords) {

@@ -8,6 +8,7 @@
 
 #include "facet/cache.h"
 #include "facet/compiler.h"
+#include "unit/test_http_server.h"
 
 namespace facet {
 namespace {
@@ -148,6 +149,45 @@ TEST_F(DriverCacheTest, KeysChangeWithOptions) {
   ASSERT_TRUE(compiled);
   EXPECT_EQ(compiled->stats.cache_hits, 0u) << "-O0 must not reuse -O entries";
   EXPECT_EQ(entries().size(), 2 * first);
+}
+
+}  // namespace
+}  // namespace facet
+
+
+namespace facet {
+namespace {
+
+Build build_remote(const std::string& cache_dir, const std::string& url) {
+  Compiler compiler;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = compiler.load(std::string(FACET_SOURCE_DIR) + "/examples/shaders/Keywords.shader", sources, diags);
+  auto compiled = compiler.compile(*shader, {.jobs = 2, .cache_dir = cache_dir, .cache_url = url}, sources, diags);
+  EXPECT_TRUE(compiled) << render_text(diags, sources);
+  return {package::write_package(compiled->package), compiled->stats};
+}
+
+// Two builders share a cache server; the second compiles nothing.
+TEST_F(DriverCacheTest, SharedServerServesAnotherBuilder) {
+  test_http::TestHttpServer server(cache::sha256_hex);
+  Build reference = build("");
+  Build first = build_remote((dir_ / "a").string(), server.url());
+  EXPECT_EQ(first.stats.cache_hits, 0u);
+  EXPECT_GT(server.puts(), 0);
+  Build second = build_remote((dir_ / "b").string(), server.url());  // another machine: empty local folder
+  EXPECT_EQ(second.stats.compiled, 0u);
+  EXPECT_EQ(second.stats.cache_remote_hits, second.stats.cache_hits);
+  EXPECT_EQ(second.stats.preprocess_skipped, second.stats.stage_programs) << "manifests come from the server too";
+  Build third = build_remote((dir_ / "b").string(), server.url());  // remote hits were copied into b
+  EXPECT_EQ(third.stats.cache_remote_hits, 0u);
+  EXPECT_EQ(third.stats.compiled, 0u);
+  Build remote_only = build_remote("", server.url());
+  EXPECT_EQ(remote_only.stats.compiled, 0u);
+  EXPECT_TRUE(first.bytes == reference.bytes);
+  EXPECT_TRUE(second.bytes == reference.bytes);
+  EXPECT_TRUE(third.bytes == reference.bytes);
+  EXPECT_TRUE(remote_only.bytes == reference.bytes);
 }
 
 }  // namespace

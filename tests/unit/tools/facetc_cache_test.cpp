@@ -5,7 +5,9 @@
 #include <chrono>
 #include <thread>
 
+#include "facet/cache.h"
 #include "facetc_test_util.h"
+#include "unit/test_http_server.h"
 
 namespace facet::tools::testing {
 namespace {
@@ -16,10 +18,10 @@ TEST_F(FacetcTest, WarmBuildHitsTheCacheAndPrintsIt) {
   ASSERT_EQ(facetc({example("Keywords.shader"), "--no-cache", "-o", "ref.facetpkg"}).exit_code, 0);
   FacetcRun cold = facetc({example("Keywords.shader"), "--cache-dir", "cache", "--stats", "-o", "cold.facetpkg"});
   ASSERT_EQ(cold.exit_code, 0) << cold.err;
-  EXPECT_THAT(cold.err, HasSubstr("cache: local hits 0 / compiled 50"));
+  EXPECT_THAT(cold.err, HasSubstr("cache: local hits 0 / remote hits 0 / compiled 50"));
   FacetcRun warm = facetc({example("Keywords.shader"), "--cache-dir", "cache", "--stats", "-o", "warm.facetpkg"});
   ASSERT_EQ(warm.exit_code, 0) << warm.err;
-  EXPECT_THAT(warm.err, HasSubstr("cache: local hits 50 / compiled 0"));
+  EXPECT_THAT(warm.err, HasSubstr("cache: local hits 50 / remote hits 0 / compiled 0"));
   EXPECT_TRUE(read_all(dir_ / "ref.facetpkg") == read_all(dir_ / "cold.facetpkg"));
   EXPECT_TRUE(read_all(dir_ / "ref.facetpkg") == read_all(dir_ / "warm.facetpkg"));
 }
@@ -61,6 +63,21 @@ TEST_F(FacetcTest, ConcurrentBuildsIntoOneCacheAreCorrect) {
     EXPECT_TRUE(read_all(dir_ / ("p" + std::to_string(i) + ".facetpkg")) == read_all(dir_ / "ref.facetpkg")) << i;
     EXPECT_EQ(read_all(dir_ / ("err" + std::to_string(i))), "") << i;
   }
+}
+
+TEST_F(FacetcTest, RemoteCacheServesASecondMachine) {
+  test_http::TestHttpServer server(cache::sha256_hex);
+  FacetcRun first = facetc({example("Keywords.shader"), "--remote-cache", server.url(), "--cache-dir", "a", "--stats",
+                            "-o", "a.facetpkg"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_THAT(first.err, HasSubstr("remote hits 0 / compiled 50"));
+  FacetcRun second = facetc({example("Keywords.shader"), "--remote-cache", server.url(), "--cache-dir", "b",
+                             "--stats", "-o", "b.facetpkg"});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_THAT(second.err, HasSubstr("local hits 0 / remote hits 50 / compiled 0"));
+  EXPECT_TRUE(read_all(dir_ / "a.facetpkg") == read_all(dir_ / "b.facetpkg"));
+  FacetcRun down = facetc({example("Unlit.shader"), "--remote-cache", "http://127.0.0.1:1", "-o", "c.facetpkg"});
+  EXPECT_EQ(down.exit_code, 0) << "an unreachable server never fails a build";
 }
 
 }  // namespace
