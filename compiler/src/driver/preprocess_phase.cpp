@@ -1,0 +1,227 @@
+// Phase 1: which stage programs the variants need, and their tokens.
+#include <fmt/format.h>
+#include <xxhash.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+
+#include "driver/build_plan.h"
+#include "driver/reachable.h"
+
+namespace facet::driver {
+namespace {
+
+// `"file"` of a #line marker as an absolute path, so that the same program
+// reached through another working folder or relative path hashes the same.
+std::string absolute_name(std::string_view quoted) {
+  if (quoted.size() < 2 || quoted[1] == '<' || quoted.back() != '"') return std::string(quoted);
+  std::error_code ec;
+  std::filesystem::path p(std::string(quoted.substr(1, quoted.size() - 2)));
+  return "\"" + std::filesystem::absolute(p, ec).lexically_normal().string() + "\"";
+}
+
+// The tokens of a preprocessed text: layout dropped and the line numbers of
+// `#line` markers too (a keyword's #define shifts the prelude's lines without
+// changing the program), but not their file names. With debug info the lines
+// reach the SPIR-V, so the text is kept whole.
+std::string token_text(const std::string& text, bool keep_lines) {
+  if (keep_lines) return text;
+  std::string tokens;
+  tokens.reserve(text.size());
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    std::string_view line(text.data() + pos, eol - pos);
+    pos = eol + 1;
+    size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) continue;
+    line.remove_prefix(first);
+    if (line.starts_with("#line")) {
+      size_t quote = line.find('"');
+      tokens += "#line ";
+      if (quote != std::string_view::npos) tokens += absolute_name(line.substr(quote));
+      tokens += '\n';
+      continue;
+    }
+    bool in_space = false;
+    for (char c : line) {
+      bool space = c == ' ' || c == '\t' || c == '\r';
+      if (space && !in_space) tokens += ' ';
+      if (!space) tokens += c;
+      in_space = space;
+    }
+    tokens += '\n';
+  }
+  return tokens;
+}
+
+// What the compiled module depends on besides its tokens.
+std::string key_context(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                        const backend::BackendOptions& options) {
+  std::string context = fmt::format("{}|opt {}|target {}|g {}|stage {}|lang {}|entry {}|", cache::build_id(),
+                                    int(options.opt), int(options.target), options.debug_info, int(stage),
+                                    int(program.language), program.entry_points[size_t(stage)]);
+  for (const ir::Property& p : shader.properties) {  // reflection binds properties to uniforms
+    context += fmt::format("{}:{}:{};", p.name, int(p.type), p.default_texture);
+  }
+  return context;
+}
+
+// What else decides which files an #include finds: the search path and the
+// including file's folder (absolute, so any working folder finds the entry).
+std::string search_context(const ir::Shader& shader, const backend::BackendOptions& options,
+                           const SourceMap& sources) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::string context = "|direct|" + fs::absolute(sources.path(shader.file), ec).lexically_normal().string();
+  for (const std::string& dir : options.include_dirs) context += "|I" + fs::absolute(dir, ec).string();
+  context += "|stdlib " + (options.stdlib_dir.empty() ? backend::default_stdlib_dir() : options.stdlib_dir);
+  for (const auto& [name, value] : options.defines) context += "|D" + name + "=" + value;
+  return context;
+}
+
+// Content hashes of files, each read once per build; safe across threads.
+class FileHashes {
+ public:
+  std::optional<uint64_t> of(const std::string& path) {
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = hashes_.find(path); it != hashes_.end()) return it->second;
+    }
+    std::optional<uint64_t> hash;
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+      std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      hash = XXH3_64bits(bytes.data(), bytes.size());
+    }
+    std::lock_guard lock(mutex_);
+    return hashes_.emplace(path, hash).first->second;
+  }
+  bool unchanged(const std::vector<std::pair<std::string, uint64_t>>& files) {
+    return std::all_of(files.begin(), files.end(), [&](const auto& f) { return of(f.first) == f.second; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::optional<uint64_t>> hashes_;
+};
+
+std::string hex_key(const std::string& context, const std::string& tokens) {
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_128bits_reset(state);
+  XXH3_128bits_update(state, context.data(), context.size());
+  XXH3_128bits_update(state, tokens.data(), tokens.size());
+  XXH128_hash_t h = XXH3_128bits_digest(state);
+  XXH3_freeState(state);
+  return fmt::format("{:016x}{:016x}", h.high64, h.low64);
+}
+
+}  // namespace
+
+Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector<variants::VariantKey>> keys) {
+  Plan plan;
+  for (size_t p = 0; p < passes.size(); ++p) {
+    const ir::Program& program = *passes[p].ir->program;
+    for (const variants::VariantKey& key : keys[p]) {
+      for (int s = 0; s < kStageCount; ++s) {
+        Stage stage = Stage(s);
+        if (!program.has_stage(stage)) continue;
+        auto id = std::make_tuple(p, stage, variants::project(passes[p].keywords, key, stage));
+        if (plan.task_of.count(id)) continue;
+        plan.task_of.emplace(id, plan.tasks.size());
+        plan.tasks.push_back({.pass = p, .stage = stage,
+                              .keywords = variants::stage_keywords(passes[p].keywords, key, stage)});
+      }
+    }
+  }
+  plan.keys = std::move(keys);
+  return plan;
+}
+
+// Tasks whose preprocessed texts are equal compile to the same module: the
+// first of them compiles, the others reuse it. Returns how many compile.
+size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<StageTask>& tasks) {
+  std::map<std::tuple<Stage, ir::ProgramLanguage, std::string, uint64_t>, size_t> first;
+  size_t compiling = 0;
+  for (size_t i = 0; i < tasks.size(); ++i) {
+    StageTask& t = tasks[i];
+    const ir::Program& program = *passes[t.pass].ir->program;
+    if (!t.preprocessed) {
+      t.compiled_by = i;  // its preprocessing failed: compile it alone for the full diagnostics
+      ++compiling;
+      continue;
+    }
+    auto id = std::make_tuple(t.stage, program.language, program.entry_points[size_t(t.stage)], t.text_hash);
+    auto [it, inserted] = first.try_emplace(id, i);
+    t.compiled_by = it->second;
+    compiling += inserted;
+  }
+  return compiling;
+}
+
+std::vector<size_t> compiling_tasks(const Plan& plan) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < plan.tasks.size(); ++i) {
+    if (plan.tasks[i].compiled_by == i) out.push_back(i);
+  }
+  return out;
+}
+
+uint64_t preprocess_tasks(const BuildContext& ctx, Plan& plan) {
+  const CompileOptions& options = ctx.options;
+  const bool store = ctx.stores.any();
+  FileHashes file_hashes;
+  std::atomic<uint64_t> manifest_hits{0};
+  parallel_for_each(plan.tasks.size(), ctx.jobs, [&](size_t i) {
+    StageTask& t = plan.tasks[i];
+    const ir::Program& program = *ctx.passes[t.pass].ir->program;
+    Diagnostics ignored;  // the compile reports the same problems with more context
+    const std::string context = key_context(ctx.shader, program, t.stage, options.backend);
+    std::string manifest_key;
+    if (store) {
+      // Direct mode: the text before preprocessing and the files it read last time.
+      auto assembled = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, false,
+                                               ctx.sources, ignored);
+      manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), *assembled);
+      if (auto bytes = ctx.stores.load_bytes(manifest_key)) {
+        auto manifest = cache::decode_manifest(*bytes);
+        if (manifest && file_hashes.unchanged(manifest->files)) {
+          t.preprocessed = true;
+          t.text_hash = manifest->token_hash;
+          t.cache_key = manifest->entry_key;
+          ++manifest_hits;
+          return;
+        }
+      }
+    }
+    std::vector<std::string> included;
+    auto text = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, true, ctx.sources,
+                                        ignored, &included);
+    if (!text) return;
+    t.preprocessed = true;
+    std::string tokens = token_text(*text, options.backend.debug_info);
+    // Stage relevance: only what this stage's entry point reaches counts
+    // (GLSL programs are already split per stage by #ifdef VERTEX/FRAGMENT;
+    // with -g the module embeds the whole source, so all of it counts).
+    if (program.language != ir::ProgramLanguage::glsl && !options.backend.debug_info) {
+      tokens = reachable_text(tokens, program.entry_points[size_t(t.stage)]);
+    }
+    t.text_hash = XXH3_64bits(tokens.data(), tokens.size());
+    t.cache_key = hex_key(context, tokens);
+    if (store) {
+      cache::IncludeManifest manifest{.entry_key = t.cache_key, .token_hash = t.text_hash};
+      for (const std::string& path : included) {
+        if (auto h = file_hashes.of(path)) manifest.files.emplace_back(path, *h);
+      }
+      if (manifest.files.size() == included.size()) {
+        ctx.stores.store_bytes(manifest_key, cache::encode_manifest(manifest));
+      }
+    }
+  });
+  return manifest_hits;
+}
+
+}  // namespace facet::driver
