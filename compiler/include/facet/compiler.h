@@ -115,6 +115,20 @@ struct CompiledShader {
   std::vector<ProgramRecord> programs;    // in pass, then first-use order
 };
 
+// What a build would cost, known before it runs: every program is
+// preprocessed (cheap), and an evenly spread sample of the distinct ones is
+// compiled and timed.
+struct BuildEstimate {
+  uint64_t variants = 0;
+  uint64_t programs = 0;          // stage programs the variants need
+  uint64_t unique = 0;            // distinct after preprocessing: what a build compiles
+  uint64_t sampled = 0;           // how many of those were compiled to measure
+  double preprocess_seconds = 0;  // wall time of preprocessing everything
+  double seconds_per_program = 0; // mean compile time of the sample, one thread
+  double estimated_seconds = 0;   // preprocess + unique x mean / threads
+  unsigned jobs = 0;
+};
+
 // A pass chosen for compilation: where it is in the IR and its keyword space.
 struct SelectedPass {
   size_t subshader = 0;
@@ -150,6 +164,11 @@ class Compiler {
   // messages from many variants are merged ("in 12 of 48 variants").
   Result<CompiledShader> compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                  Diagnostics& diags) const;
+
+  // The cost of compile(shader, options) without compiling it all: see
+  // BuildEstimate. The cache is not used, so the estimate is of a cold build.
+  Result<BuildEstimate> estimate(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
+                                 Diagnostics& diags, size_t sample = 16) const;
 
   const backend::Backend& backend() const { return backend_; }
 

@@ -84,6 +84,7 @@ struct PassReport {
 
 struct ShaderReport {
   std::string path, name;
+  std::optional<BuildEstimate> estimate;  // made before the build, from a timed sample
   std::vector<PassReport> passes;
   double compile_seconds = 0;
   uint64_t programs = 0, compiled = 0;

@@ -145,6 +145,35 @@ bool assemble_package(const BuildContext& ctx, const Plan& plan, CompiledShader&
 
 }  // namespace
 
+Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const CompileOptions& options,
+                                        SourceMap& sources, Diagnostics& diags, size_t sample) const {
+  auto passes = select_passes(shader, options, diags);
+  FACET_TRY(passes);
+  uint64_t stripped = 0;
+  auto keys = select_keys(*this, *passes, options, diags, stripped);
+  FACET_TRY(keys);
+  const cache::CacheStores no_cache;
+  const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
+  BuildEstimate e{.jobs = ctx.jobs};
+  for (const auto& k : *keys) e.variants += k.size();
+  auto started = std::chrono::steady_clock::now();
+  Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  driver::preprocess_tasks(ctx, plan);
+  e.unique = driver::assign_compilers(*passes, plan.tasks);
+  e.programs = plan.tasks.size();
+  e.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::vector<size_t> unique = driver::compiling_tasks(plan), picked;
+  const size_t n = std::min(std::max<size_t>(sample, 1), unique.size());
+  for (size_t i = 0; i < n; ++i) picked.push_back(unique[i * unique.size() / n]);
+  driver::compile_tasks(ctx, plan, picked);
+  double total = 0;
+  for (size_t i : picked) total += plan.tasks[i].entry.seconds;
+  e.sampled = picked.size();
+  e.seconds_per_program = picked.empty() ? 0 : total / double(picked.size());
+  e.estimated_seconds = e.preprocess_seconds + double(e.unique) * e.seconds_per_program / double(ctx.jobs);
+  return e;
+}
+
 Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                          Diagnostics& diags) const {
   auto started = std::chrono::steady_clock::now();

@@ -142,6 +142,12 @@ code { background: #eef1f5; padding: 0 3px; }
   for (const ShaderReport& r : reports) {
     h += fmt::format("<h2>{}</h2>\n<p><code>{}</code>: {} programs, {} compiled, {:.3f} s</p>\n", escape(r.name),
                      escape(r.path), r.programs, r.compiled, r.compile_seconds);
+    if (r.estimate) {
+      h += fmt::format("<p>Estimated before building: ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
+                       "from {} sampled).</p>\n",
+                       r.estimate->estimated_seconds, r.estimate->jobs, r.estimate->unique,
+                       1000 * r.estimate->seconds_per_program, r.estimate->sampled);
+    }
     for (const PassReport& p : r.passes) h += pass_section(p);
   }
   return h + "</body></html>\n";

@@ -74,6 +74,13 @@ std::string to_json(const std::vector<ShaderReport>& reports) {
   for (const ShaderReport& r : reports) {
     Json s = {{"path", r.path}, {"name", r.name}, {"programs", r.programs}, {"compiled", r.compiled},
               {"compile_seconds", micro(r.compile_seconds)}, {"passes", Json::array()}};
+    if (r.estimate) {
+      const BuildEstimate& e = *r.estimate;
+      s["estimate"] = {{"programs", e.programs}, {"to_compile", e.unique}, {"sampled", e.sampled},
+                       {"preprocess_seconds", micro(e.preprocess_seconds)},
+                       {"seconds_per_program", micro(e.seconds_per_program)},
+                       {"estimated_seconds", micro(e.estimated_seconds)}, {"threads", e.jobs}};
+    }
     for (const PassReport& p : r.passes) s["passes"].push_back(pass_json(p));
     doc["shaders"].push_back(std::move(s));
   }

@@ -26,7 +26,7 @@ struct RawArgs {
   uint64_t max_variants = 65536;
   unsigned jobs = 0;
   std::string cache_dir, cache_url, shard;
-  bool merge = false;
+  bool merge = false, estimate = false;
   bool no_cache = false;
 };
 
@@ -78,6 +78,7 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
   app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
   app.add_option("--shard", raw.shard, "build shard i of N (every N-th variant), e.g. 0/4; join with --merge");
+  app.add_flag("--estimate", raw.estimate, "estimate the build's time from a timed sample, before building");
   app.add_flag("--merge", raw.merge, "join the .facetpkg files of --shard builds into the package of -o");
   app.add_option("--cache-dir", raw.cache_dir, "the compile cache folder (default: $FACET_CACHE_DIR, else none)");
   app.add_option("--remote-cache", raw.cache_url,
@@ -118,7 +119,8 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       {raw.preprocess, Mode::preprocess},       {raw.assemble || !raw.emit.empty(), Mode::emit},
       {raw.reflect, Mode::reflect},             {raw.list_variants, Mode::list_variants},
       {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only},
-      {!raw.report.empty(), Mode::report},     {raw.merge, Mode::merge}};
+      {!raw.report.empty(), Mode::report},     {raw.merge, Mode::merge},
+      {raw.estimate, Mode::estimate}};
   int chosen = 0;
   for (auto [on, mode] : modes) {
     if (on) {
@@ -127,7 +129,7 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
     }
   }
   if (chosen > 1) {
-    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge and -M exclude each other";
+    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge, --estimate and -M exclude each other";
   }
   args.report = raw.report == "json" ? ReportFormat::json : raw.report == "html" ? ReportFormat::html
                                                                                    : ReportFormat::text;

@@ -22,6 +22,7 @@ enum class Mode {
   depfile_only,   // -M: the make rule of every file the build reads, nothing else
   report,         // --report[=text|json|html]: the variant report of every input (docs/reports.md)
   merge,          // --merge: join the packages of --shard builds into one
+  estimate,       // --estimate: what a build would take, from a timed sample
 };
 
 enum class ReportFormat { text, json, html };

@@ -80,6 +80,8 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
     CompileOptions options = compile_options(args, false);
     options.strip = strip.filter;
     auto passes = compiler.select_passes(*shader, options, diags);
+    Diagnostics estimate_diags;  // the build reports the same problems
+    auto estimate = compiler.estimate(*shader, options, sources, estimate_diags);
     std::optional<CompiledShader> compiled;
     if (passes) {
       if (auto c = compiler.compile(*shader, options, sources, diags)) compiled = std::move(*c);
@@ -88,6 +90,7 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
       report::ReportOptions report_options;
       if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
       result = report::build_report(*shader, *passes, *compiled, sources, report_options);
+      if (estimate) result->estimate = *estimate;
     }
   }
   show_diagnostics(args, diags, sources, console, json_diagnostics);

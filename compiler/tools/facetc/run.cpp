@@ -146,6 +146,17 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
     }
     case Mode::report:  // run_report handles it
     case Mode::merge:   // run_merge handles it
+      return failure("not a per-input mode");
+    case Mode::estimate: {
+      auto e = compiler.estimate(*shader, stripped_options(compile_options(args, false), strip, *shader), sources,
+                                 diags);
+      FACET_TRY(e);
+      return Produced{.bytes = fmt::format("{}: {} variants, {} programs, {} to compile; ~{:.2f} s on {} threads "
+                                           "(preprocessing {:.2f} s, {:.1f} ms per program from {} sampled)\n",
+                                           input, e->variants, e->programs, e->unique, e->estimated_seconds, e->jobs,
+                                           e->preprocess_seconds, 1000 * e->seconds_per_program, e->sampled),
+                      .output = args.output};
+    }
     case Mode::preprocess:
     case Mode::emit:
     case Mode::reflect: {

@@ -191,3 +191,28 @@ INSTANTIATE_TEST_SUITE_P(Shaders, DriverStageRelevanceTest,
 
 }  // namespace
 }  // namespace facet
+
+namespace facet {
+namespace {
+
+TEST(DriverEstimateTest, CountsTheBuildAndTimesASample) {
+  Compiler compiler;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = compiler.load(example("Keywords.shader"), sources, diags);
+  ASSERT_TRUE(shader);
+  auto e = compiler.estimate(*shader, {.jobs = 2}, sources, diags, 8);
+  ASSERT_TRUE(e) << render_text(diags, sources);
+  EXPECT_EQ(e->variants, 48u);
+  EXPECT_EQ(e->programs, 64u);
+  EXPECT_EQ(e->unique, 50u) << "what compile() compiles";
+  EXPECT_EQ(e->sampled, 8u);
+  EXPECT_GT(e->seconds_per_program, 0);
+  EXPECT_GT(e->estimated_seconds, e->preprocess_seconds);
+  auto all = compiler.estimate(*shader, {.jobs = 1}, sources, diags, 1000);
+  ASSERT_TRUE(all);
+  EXPECT_EQ(all->sampled, 50u) << "a sample never exceeds the programs";
+}
+
+}  // namespace
+}  // namespace facet

@@ -14,6 +14,11 @@ TEST_F(FacetcTest, ReportFormatsAndFolders) {
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("shader 'Examples/Keywords'"));
   EXPECT_THAT(text.out, HasSubstr("what if: remove 'multi_compile_fog _ FOG_LINEAR FOG_EXP FOG_EXP2'"));
+  EXPECT_THAT(text.out, HasSubstr("estimated before building: ~"));
+  EXPECT_THAT(text.out, HasSubstr("(50 programs to compile at"));
+  FacetcRun estimate = facetc({"--estimate", example("Keywords.shader")});
+  ASSERT_EQ(estimate.exit_code, 0) << estimate.err;
+  EXPECT_THAT(estimate.out, HasSubstr("48 variants, 64 programs, 50 to compile; ~"));
 
   FacetcRun json = facetc({"--report=json", std::string(FACET_SOURCE_DIR) + "/examples/shaders"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
