@@ -165,6 +165,22 @@ class Compiler {
   Result<CompiledShader> compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                  Diagnostics& diags) const;
 
+  // The distinct stage programs compile(shader, options) would compile, as
+  // (pass index in the SubShader, stage, keywords the stage sees), in plan
+  // order: one build-farm job each (facetc --emit-jobs).
+  struct ProgramJob {
+    size_t pass = 0;
+    Stage stage = Stage::vertex;
+    std::vector<std::string> keywords;
+  };
+  Result<std::vector<ProgramJob>> program_jobs(const ir::Shader& shader, const CompileOptions& options,
+                                               SourceMap& sources, Diagnostics& diags) const;
+  // Compiles the one program `job` names into the cache of `options`
+  // (cache_dir and/or cache_url must be set), for a farm worker. Returns
+  // whether it was compiled (false: it was already in the cache).
+  Result<bool> compile_program(const ir::Shader& shader, const CompileOptions& options, const ProgramJob& job,
+                               SourceMap& sources, Diagnostics& diags) const;
+
   // The cost of compile(shader, options) without compiling it all: see
   // BuildEstimate. The cache is not used, so the estimate is of a cold build.
   Result<BuildEstimate> estimate(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,

@@ -5,6 +5,7 @@
 // parallel, compile each distinct preprocessed text once in parallel, then
 // assemble the package sequentially in key order, so the bytes do not depend
 // on the thread count or on which thread finished first.
+#include <fmt/format.h>
 #include <xxhash.h>
 
 #include <chrono>
@@ -144,6 +145,56 @@ bool assemble_package(const BuildContext& ctx, const Plan& plan, CompiledShader&
 }
 
 }  // namespace
+
+Result<std::vector<Compiler::ProgramJob>> Compiler::program_jobs(const ir::Shader& shader,
+                                                                 const CompileOptions& options, SourceMap& sources,
+                                                                 Diagnostics& diags) const {
+  auto passes = select_passes(shader, options, diags);
+  FACET_TRY(passes);
+  uint64_t stripped = 0;
+  auto keys = select_keys(*this, *passes, options, diags, stripped);
+  FACET_TRY(keys);
+  const cache::CacheStores no_cache;
+  const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
+  Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  driver::preprocess_tasks(ctx, plan);
+  driver::assign_compilers(*passes, plan.tasks);
+  std::vector<ProgramJob> jobs;
+  for (size_t i : driver::compiling_tasks(plan)) {
+    const StageTask& t = plan.tasks[i];
+    jobs.push_back({(*passes)[t.pass].pass, t.stage, t.keywords});
+  }
+  return jobs;
+}
+
+Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOptions& options, const ProgramJob& job,
+                                       SourceMap& sources, Diagnostics& diags) const {
+  const cache::CacheStores stores = cache_stores(options);
+  if (!stores.any()) {
+    diags.add(DiagId::driver_bad_option, {}, "a program job compiles into the cache: give --cache-dir or --remote-cache");
+    return failure("no cache");
+  }
+  auto passes = select_passes(shader, options, diags);
+  FACET_TRY(passes);
+  auto pass = std::find_if(passes->begin(), passes->end(), [&](const SelectedPass& p) { return p.pass == job.pass; });
+  if (pass == passes->end() || !pass->ir->program->has_stage(job.stage)) {
+    diags.add(DiagId::driver_no_such_pass, {},
+              fmt::format("the job names pass {} and the {} stage, which this shader does not have", job.pass,
+                          stage_name(job.stage)));
+    return failure("no such program");
+  }
+  std::vector<SelectedPass> one{*pass};
+  const BuildContext ctx{shader, options, sources, backend_, one, stores, 1};
+  Plan plan;
+  plan.keys.resize(1);
+  plan.tasks.push_back({.pass = 0, .stage = job.stage, .keywords = job.keywords});
+  driver::preprocess_tasks(ctx, plan);
+  driver::assign_compilers(one, plan.tasks);
+  CompileCounters counters = driver::compile_tasks(ctx, plan, {0});
+  diags.append(plan.tasks[0].entry.diags);
+  if (!plan.tasks[0].entry.ok) return failure("compile errors");
+  return counters.hits == 0;
+}
 
 Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const CompileOptions& options,
                                         SourceMap& sources, Diagnostics& diags, size_t sample) const {

@@ -27,6 +27,7 @@ struct RawArgs {
   unsigned jobs = 0;
   std::string cache_dir, cache_url, shard;
   bool merge = false, estimate = false;
+  std::string emit_jobs, program;
   bool no_cache = false;
 };
 
@@ -78,6 +79,9 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
   app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
   app.add_option("--shard", raw.shard, "build shard i of N (every N-th variant), e.g. 0/4; join with --merge");
+  app.add_option("--emit-jobs", raw.emit_jobs, "write a ninja file (or JSON) with one job per distinct program")
+      ->check(CLI::IsMember({"ninja", "json"}));
+  app.add_option("--program", raw.program, "compile one program (PASS:STAGE:KW1,KW2) into the cache: a farm job");
   app.add_flag("--estimate", raw.estimate, "estimate the build's time from a timed sample, before building");
   app.add_flag("--merge", raw.merge, "join the .facetpkg files of --shard builds into the package of -o");
   app.add_option("--cache-dir", raw.cache_dir, "the compile cache folder (default: $FACET_CACHE_DIR, else none)");
@@ -86,6 +90,20 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_flag("--no-cache", raw.no_cache, "neither read nor write the compile cache");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
   app.add_flag("--version", raw.version, "print the version and exit");
+}
+
+// The options that shape what is compiled, spelled for a job's command line.
+std::vector<std::string> compile_flags(const RawArgs& raw) {
+  std::vector<std::string> flags;
+  for (const std::string& d : raw.defines) flags.push_back("-D" + d);
+  for (const std::string& i : raw.include_dirs) flags.insert(flags.end(), {"-I", i});
+  flags.push_back("--opt=" + raw.opt);
+  flags.push_back("--target-env=" + raw.target_env);
+  if (raw.debug_info) flags.push_back("-g");
+  if (!raw.stdlib_dir.empty()) flags.insert(flags.end(), {"--stdlib-dir", raw.stdlib_dir});
+  if (!raw.no_cache && !raw.cache_dir.empty()) flags.insert(flags.end(), {"--cache-dir", raw.cache_dir});
+  if (!raw.no_cache && !raw.cache_url.empty()) flags.insert(flags.end(), {"--remote-cache", raw.cache_url});
+  return flags;
 }
 
 std::vector<std::string> split_keywords(const std::vector<std::string>& lists) {
@@ -120,7 +138,8 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       {raw.reflect, Mode::reflect},             {raw.list_variants, Mode::list_variants},
       {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only},
       {!raw.report.empty(), Mode::report},     {raw.merge, Mode::merge},
-      {raw.estimate, Mode::estimate}};
+      {raw.estimate, Mode::estimate},          {!raw.emit_jobs.empty(), Mode::emit_jobs},
+      {!raw.program.empty(), Mode::program}};
   int chosen = 0;
   for (auto [on, mode] : modes) {
     if (on) {
@@ -129,7 +148,7 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
     }
   }
   if (chosen > 1) {
-    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge, --estimate and -M exclude each other";
+    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge, --estimate, --emit-jobs, --program and -M exclude each other";
   }
   args.report = raw.report == "json" ? ReportFormat::json : raw.report == "html" ? ReportFormat::html
                                                                                    : ReportFormat::text;
@@ -167,7 +186,7 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
     return "-MF and -MT need -M or -MD";
   }
   if (raw.write_depfile && args.mode != Mode::package && args.mode != Mode::emit && args.mode != Mode::reflect &&
-      args.mode != Mode::preprocess) {
+      args.mode != Mode::preprocess && args.mode != Mode::program) {
     return "-MD goes with an output: a package, -E, -S or --reflect";
   }
   if (raw.write_depfile && raw.depfile.empty() && (args.output.empty() || args.output == "-") &&
@@ -177,6 +196,13 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
   if (!raw.depfile.empty() && args.inputs.size() > 1) return "-MF names one depfile; give one input";
   if (args.mode == Mode::merge && (args.output.empty() || args.output == "-")) return "--merge writes the file -o names";
   if (args.shard_count > 1 && args.mode != Mode::package) return "--shard applies to package builds";
+  if ((args.mode == Mode::emit_jobs || args.mode == Mode::program) && args.cache_dir.empty() &&
+      args.cache_url.empty()) {
+    return "farm jobs hand their results over through the cache: give --cache-dir or --remote-cache";
+  }
+  if ((args.mode == Mode::emit_jobs || args.mode == Mode::program) && args.inputs.size() != 1) {
+    return "--emit-jobs and --program take one shader";
+  }
   return std::nullopt;
 }
 
@@ -192,6 +218,9 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.stats = raw.stats;
   args.material_files = raw.material_files;
   args.strip_files = raw.strip_files;
+  args.jobs_format = raw.emit_jobs == "json" ? JobsFormat::json : JobsFormat::ninja;
+  args.program = raw.program;
+  args.compile_flags = compile_flags(raw);
   args.jobs = raw.jobs;
   if (!raw.no_cache) {
     const char* env = std::getenv("FACET_CACHE_DIR");

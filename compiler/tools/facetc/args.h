@@ -23,7 +23,11 @@ enum class Mode {
   report,         // --report[=text|json|html]: the variant report of every input (docs/reports.md)
   merge,          // --merge: join the packages of --shard builds into one
   estimate,       // --estimate: what a build would take, from a timed sample
+  emit_jobs,      // --emit-jobs=ninja|json: one build-farm job per distinct program, and the package job
+  program,        // --program PASS:STAGE:KEYWORDS: one farm job, compiled into the cache
 };
+
+enum class JobsFormat { ninja, json };
 
 enum class ReportFormat { text, json, html };
 
@@ -60,6 +64,10 @@ struct FacetcArgs {
   bool stats = false;
   unsigned jobs = 0;  // -j N; 0: one per core
   uint32_t shard_index = 0, shard_count = 1;  // --shard i/N
+  JobsFormat jobs_format = JobsFormat::ninja;  // --emit-jobs
+  std::string program;                         // --program PASS:STAGE:KW1,KW2
+  std::vector<std::string> compile_flags;      // the options that shape compiled code, to pass on to jobs
+  std::string facetc_path = "facetc";          // how jobs call facetc: this program's own path
   std::string cache_dir;  // --cache-dir, else $FACET_CACHE_DIR; "" (or --no-cache): none
   std::string cache_url;  // --remote-cache, else $FACET_REMOTE_CACHE; "" (or --no-cache): none
 };

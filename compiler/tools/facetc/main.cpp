@@ -1,4 +1,5 @@
 // facetc: the glslc-style command-line compiler (docs/cli.md).
+#include <filesystem>
 #include <iostream>
 
 #include "args.h"
@@ -11,6 +12,9 @@ int main(int argc, char** argv) {
     (parsed.exit_code == 0 ? std::cout : std::cerr) << parsed.text;
     return parsed.exit_code;
   }
+  std::error_code ec;
+  auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) parsed.args->facetc_path = self.string();
   facet::tools::Console console{std::cout, std::cerr};
   return facet::tools::run_facetc(*parsed.args, console);
 }

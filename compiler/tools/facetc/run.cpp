@@ -14,6 +14,7 @@
 #include "facet/package.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "jobs.h"
 #include "progress.h"
 #include "report_mode.h"
 #include "strip_filter.h"
@@ -147,6 +148,22 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
     case Mode::report:  // run_report handles it
     case Mode::merge:   // run_merge handles it
       return failure("not a per-input mode");
+    case Mode::emit_jobs: {
+      auto text = emit_jobs(args, compiler, *shader, input, args.facetc_path, sources, diags);
+      FACET_TRY(text);
+      return Produced{.bytes = std::move(*text), .output = args.output};
+    }
+    case Mode::program: {
+      auto job = parse_program_job(args.program);
+      if (!job) {
+        diags.add(DiagId::driver_bad_option, {}, "--program takes PASS:STAGE:KEYWORDS, e.g. 0:fragment:FOG_LINEAR,_EMISSION");
+        return Produced{.usage_error = true};
+      }
+      auto compiled = compiler.compile_program(*shader, compile_options(args, false), *job, sources, diags);
+      FACET_TRY(compiled);
+      return Produced{.bytes = fmt::format("{} {}\n", program_job_spec(*job), *compiled ? "compiled" : "cached"),
+                      .output = args.output};
+    }
     case Mode::estimate: {
       auto e = compiler.estimate(*shader, stripped_options(compile_options(args, false), strip, *shader), sources,
                                  diags);

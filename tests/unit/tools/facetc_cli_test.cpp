@@ -279,3 +279,35 @@ TEST_F(FacetcTest, ProgressBarOnlyOnATerminal) {
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+TEST_F(FacetcTest, EmittedNinjaJobsBuildTheSamePackage) {
+  ASSERT_EQ(facetc({example("PhongMultiLight.shader"), "--no-cache", "-o", "ref.facetpkg"}).exit_code, 0);
+  FacetcRun emit = facetc({example("PhongMultiLight.shader"), "--emit-jobs=ninja", "--cache-dir", "cache", "-o",
+                           "build.ninja"});
+  ASSERT_EQ(emit.exit_code, 0) << emit.err;
+  EXPECT_THAT(read_all(dir_ / "build.ninja"), ::testing::HasSubstr("(7 jobs)")) << "one per distinct program";
+  std::string ninja = "cd " + shell_quote(dir_.string()) + " && ninja > ninja.log 2>&1";
+  ASSERT_EQ(std::system(ninja.c_str()), 0) << read_all(dir_ / "ninja.log");
+  EXPECT_TRUE(read_all(dir_ / "PhongMultiLight.facetpkg") == read_all(dir_ / "ref.facetpkg"));
+  ASSERT_EQ(std::system((ninja + " && ninja -t deps > deps.txt").c_str()), 0);
+  EXPECT_THAT(read_all(dir_ / "ninja.log"), ::testing::HasSubstr("no work to do"));
+  EXPECT_THAT(read_all(dir_ / "deps.txt"), ::testing::HasSubstr("UnityCG.cginc")) << "exact depfiles per job";
+
+  FacetcRun json = facetc({example("PhongMultiLight.shader"), "--emit-jobs=json", "--cache-dir", "cache"});
+  ASSERT_EQ(json.exit_code, 0);
+  auto doc = nlohmann::json::parse(json.out);
+  EXPECT_EQ(doc["jobs"].size(), 7u);
+  EXPECT_EQ(doc["jobs"][0]["command"][2], "--program");
+
+  EXPECT_EQ(facetc({example("PhongMultiLight.shader"), "--emit-jobs=ninja"}).exit_code, 2) << "needs a cache";
+  EXPECT_EQ(facetc({example("PhongMultiLight.shader"), "--program", "zero:vertex:", "--cache-dir", "c"}).exit_code, 2);
+  FacetcRun missing = facetc({example("PhongMultiLight.shader"), "--program", "7:vertex:", "--cache-dir", "c"});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_THAT(missing.err, ::testing::HasSubstr("which this shader does not have"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
