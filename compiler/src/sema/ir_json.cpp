@@ -6,55 +6,13 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "common/json_print.h"
 #include "facet/sema.h"
 
 namespace facet::sema {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// Like dump(2), but an array of numbers or strings stays on one line, so a
-// colour or a tag pair reads as one line in golden files. (shaderlab/ast_json.cpp
-// has the same printer; it belongs in common/ once both stages settle.)
-void print(const Json& j, int indent, std::string& out) {
-  auto scalar = [](const Json& x) { return !x.is_object() && !x.is_array(); };
-  const std::string pad(size_t(indent) + 2, ' ');
-  if (j.is_object() && !j.empty()) {
-    out += "{\n";
-    bool first = true;
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (!first) out += ",\n";
-      first = false;
-      out += pad + Json(it.key()).dump(-1, ' ', false, Json::error_handler_t::replace) + ": ";
-      print(it.value(), indent + 2, out);
-    }
-    out += "\n" + std::string(size_t(indent), ' ') + "}";
-  } else if (j.is_array() && !j.empty() && !std::all_of(j.begin(), j.end(), scalar)) {
-    out += "[\n";
-    for (size_t i = 0; i < j.size(); ++i) {
-      if (i > 0) out += ",\n";
-      out += pad;
-      print(j[i], indent + 2, out);
-    }
-    out += "\n" + std::string(size_t(indent), ' ') + "]";
-  } else if (j.is_array() && !j.empty()) {
-    out += "[";
-    for (size_t i = 0; i < j.size(); ++i) {
-      if (i > 0) out += ", ";
-      out += j[i].dump(-1, ' ', false, Json::error_handler_t::replace);
-    }
-    out += "]";
-  } else {
-    // `replace` never throws, even on text that is not UTF-8.
-    out += j.dump(-1, ' ', false, Json::error_handler_t::replace);
-  }
-}
-
-std::string pretty(const Json& j) {
-  std::string out;
-  print(j, 0, out);
-  return out + "\n";
-}
 
 Json number(float f) {
   char buffer[32];
@@ -236,7 +194,7 @@ std::string ir_to_json(const ir::Shader& shader) {
   if (shader.fallback) j["fallback"] = *shader.fallback;
   if (!shader.custom_editor.empty()) j["custom_editor"] = shader.custom_editor;
   j["span"] = span(shader.span);
-  return pretty(j);
+  return pretty_json(j);
 }
 
 }  // namespace facet::sema
