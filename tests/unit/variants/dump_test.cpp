@@ -5,33 +5,15 @@
 #include <sstream>
 
 #include "facet/variants.h"
+#include "unit/variants/pragma_lines.h"
 
 namespace facet::variants {
 namespace {
 
-using Lines = std::vector<std::string>;
+using pragma_lines::Lines;
 
-ir::Program program_of(const Lines& lines) {
-  ir::Program program;
-  uint32_t offset = 0;
-  for (const std::string& line : lines) {
-    std::istringstream words{line};
-    ir::Pragma pragma;
-    words >> pragma.name;
-    for (std::string arg; words >> arg;) pragma.args.push_back(arg);
-    pragma.span = SourceSpan{0, offset, offset + uint32_t(line.size())};
-    offset += uint32_t(line.size()) + 1;
-    program.pragmas.push_back(std::move(pragma));
-  }
-  return program;
-}
-
-KeywordSpace space_of(const Lines& lines) {
-  Diagnostics diags;
-  auto space = build_keyword_space(program_of(lines), diags);
-  EXPECT_TRUE(space.has_value());
-  return space ? *space : KeywordSpace{};
-}
+using pragma_lines::program_of;
+using pragma_lines::space_of;
 
 const Lines kForward = {"multi_compile_fwdbase", "multi_compile_fog", "shader_feature_local_fragment _NORMALMAP",
                         "dynamic_branch _USE_X", "skip_variants SHADOWS_SCREEN FOG_EXP"};

@@ -4,27 +4,14 @@
 #include <sstream>
 
 #include "facet/variants.h"
+#include "unit/variants/pragma_lines.h"
 
 namespace facet::variants {
 namespace {
 
-ir::Program program_of(const std::vector<std::string>& lines) {
-  ir::Program program;
-  for (const std::string& line : lines) {
-    std::istringstream words(line);
-    ir::Pragma pragma;
-    words >> pragma.name;
-    for (std::string arg; words >> arg;) pragma.args.push_back(arg);
-    program.pragmas.push_back(std::move(pragma));
-  }
-  return program;
-}
+using pragma_lines::program_of;
 
-KeywordSpace space_of(const std::vector<std::string>& lines, Diagnostics& diags) {
-  auto space = build_keyword_space(program_of(lines), diags);
-  EXPECT_TRUE(space) << (diags.size() ? diags.all()[0].message : "");
-  return space ? *space : KeywordSpace{};
-}
+KeywordSpace space_of(const std::vector<std::string>& lines, Diagnostics&) { return pragma_lines::space_of(lines); }
 
 const std::vector<std::string> kPragmas = {"multi_compile _ A", "multi_compile _ B", "multi_compile _ C"};
 
