@@ -93,6 +93,12 @@ struct CompileStats {
   uint64_t compiled = 0;            // unique programs glslang compiled
   unsigned jobs = 0;                // worker threads used
   double seconds = 0;
+  // Where `seconds` went: choosing passes and variants, preprocessing (or
+  // checking include manifests), compiling (or loading from the cache),
+  // and assembling, deduplicating and checking the package.
+  struct Phases {
+    double select = 0, preprocess = 0, compile = 0, assemble = 0;
+  } phases;
 };
 
 // One stage program the variants needed (a pass, a stage and the keywords

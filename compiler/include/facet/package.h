@@ -17,7 +17,7 @@
 
 namespace facet::package {
 
-inline constexpr uint32_t kFormatVersion = 1;
+inline constexpr uint32_t kFormatVersion = 2;  // 2: reflections shared between stages (1: inline)
 
 struct PackageStage {
   Stage stage = Stage::vertex;

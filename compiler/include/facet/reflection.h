@@ -17,6 +17,8 @@ struct StageVariable {
   uint32_t location = 0;
   std::string type;      // "float4", "float3x3", "int2", ...
   uint32_t array_size = 0;  // 0: not an array
+
+  bool operator==(const StageVariable&) const = default;
 };
 
 // A member of a uniform block; nested structs have members of their own.
@@ -31,6 +33,8 @@ struct BlockMember {
   uint32_t matrix_stride = 0;
   bool row_major = false;
   std::vector<BlockMember> members;
+
+  bool operator==(const BlockMember&) const = default;
 };
 
 struct UniformBlock {
@@ -39,6 +43,8 @@ struct UniformBlock {
   uint32_t size = 0;      // declared size in bytes
   bool push_constant = false;
   std::vector<BlockMember> members;
+
+  bool operator==(const UniformBlock&) const = default;
 };
 
 enum class ResourceKind : uint8_t {
@@ -52,6 +58,8 @@ struct ResourceBinding {
   bool arrayed = false;    // 2DArray, CubeArray
   uint32_t set = 0, binding = 0;
   uint32_t array_size = 0; // 0: not an array
+
+  bool operator==(const ResourceBinding&) const = default;
 };
 
 struct SpecConstant {
@@ -59,6 +67,8 @@ struct SpecConstant {
   uint32_t id = 0;
   std::string type;
   std::string default_value;  // printed as text
+
+  bool operator==(const SpecConstant&) const = default;
 };
 
 // Which material property feeds which uniform or texture: "_Color" ->
@@ -69,6 +79,8 @@ struct PropertyBinding {
   std::string role;    // "value", "texture", "scale_offset", "texel_size", "hdr_decode"
   std::string block;   // empty for textures
   std::string member;  // uniform member or resource name
+
+  bool operator==(const PropertyBinding&) const = default;
 };
 
 struct StageReflection {
@@ -79,6 +91,8 @@ struct StageReflection {
   std::vector<ResourceBinding> resources;        // sorted by (set, binding)
   std::vector<SpecConstant> spec_constants;      // sorted by id
   std::vector<PropertyBinding> property_bindings;
+
+  bool operator==(const StageReflection&) const = default;
 };
 
 }  // namespace facet

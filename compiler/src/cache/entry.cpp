@@ -1,22 +1,25 @@
 // The cache entry format: little-endian, length-prefixed, checksummed.
 //   "FACETCACHE" u16 version
 //   u64 n, n x u32 SPIR-V words
-//   u64 n, n bytes of reflection JSON
+//   u64 n, n bytes of reflection: u32 string count, count x (u32 n, n bytes),
+//                                 then the StageReflection (common/binary_codec.h)
 //   u64 count, count x (u64 n, n bytes) included file paths
 //   u64 XXH64 of every byte before it
 #include <xxhash.h>
 
 #include <cstring>
+#include <optional>
+#include <span>
 
 #include "facet/cache.h"
-#include "facet/reflection_json.h"
+#include "common/binary_codec.h"
 #include "facet_build_id.h"
 
 namespace facet::cache {
 namespace {
 
 constexpr std::string_view kMagic = "FACETCACHE";
-constexpr uint16_t kVersion = 1;
+constexpr uint16_t kVersion = 2;  // 2: binary reflection (1 was JSON)
 constexpr uint64_t kChecksumSeed = 0x66616365745f6361ull;  // "facet_ca"
 
 }  // namespace
@@ -88,6 +91,35 @@ class Reader {
   size_t pos_ = 0;
 };
 
+// The string table first, so that the decoder resolves references as it goes.
+std::string encode_reflection_bytes(const StageReflection& reflection) {
+  codec::StringTable strings;
+  codec::Encoder body(strings);
+  codec::encode_reflection(body, reflection);
+  codec::Encoder head(strings);
+  head.count(strings.strings().size());
+  for (const std::string& s : strings.strings()) {
+    head.u32(uint32_t(s.size()));
+    head.bytes().insert(head.bytes().end(), s.begin(), s.end());
+  }
+  std::string out(head.bytes().begin(), head.bytes().end());
+  out.append(body.bytes().begin(), body.bytes().end());
+  return out;
+}
+
+std::optional<StageReflection> decode_reflection_bytes(std::string_view bytes) {
+  std::span<const uint8_t> data(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+  codec::DecodeContext ctx;
+  ctx.string_budget = UINT64_MAX;  // strings are stored inline, so they are bounded by the entry
+  codec::Decoder in(data, 0, ctx);
+  uint32_t n = in.count(4, "string");
+  for (uint32_t i = 0; i < n && in.ok(); ++i) ctx.strings.push_back(in.inline_string());
+  StageReflection reflection = codec::decode_reflection(in);
+  in.expect_end("reflection");
+  if (!in.ok()) return std::nullopt;
+  return reflection;
+}
+
 }  // namespace
 
 std::string encode_entry(const CacheEntry& entry) {
@@ -96,7 +128,7 @@ std::string encode_entry(const CacheEntry& entry) {
   out += char(kVersion >> 8);
   put_u64(out, entry.spirv.size());
   out.append(reinterpret_cast<const char*>(entry.spirv.data()), entry.spirv.size() * 4);
-  put_bytes(out, reflection_to_json_text(entry.reflection, -1));
+  put_bytes(out, encode_reflection_bytes(entry.reflection));
   put_u64(out, entry.included_files.size());
   for (const std::string& path : entry.included_files) put_bytes(out, path);
   put_u64(out, XXH64(out.data(), out.size(), kChecksumSeed));
@@ -126,7 +158,7 @@ std::optional<CacheEntry> decode_entry(std::string_view bytes) {
     entry.included_files.push_back(std::move(path));
   }
   if (!in.at_end()) return std::nullopt;
-  auto parsed = reflection_from_json_text(reflection);
+  auto parsed = decode_reflection_bytes(reflection);
   if (!parsed) return std::nullopt;
   entry.reflection = std::move(*parsed);
   return entry;

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "facet/cache.h"
@@ -31,11 +30,16 @@ std::string LocalCache::path_of(const std::string& key) const {
 
 std::optional<std::string> LocalCache::load_bytes(const std::string& key) const {
   if (!valid_key(key)) return std::nullopt;
-  std::ifstream in(path_of(key), std::ios::binary);
+  // One read into a string of the file's size: entries are read by the
+  // thousand on a warm build, where a stream copy costs more than the I/O.
+  std::ifstream in(path_of(key), std::ios::binary | std::ios::ate);
   if (!in) return std::nullopt;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
+  std::streamoff size = in.tellg();
+  if (size < 0) return std::nullopt;
+  std::string bytes(size_t(size), '\0');
+  in.seekg(0);
+  if (!in.read(bytes.data(), size)) return std::nullopt;
+  return bytes;
 }
 
 LoadResult LocalCache::load(const std::string& key) const {

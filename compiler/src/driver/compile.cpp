@@ -94,8 +94,31 @@ cache::CacheStores cache_stores(const CompileOptions& options) {
 }
 
 // Phase 3: the package, sequentially in key order. false on compile errors.
-bool assemble_package(const BuildContext& ctx, const Plan& plan, CompiledShader& out, Diagnostics& diags) {
+// The task of each (pass, variant, stage) of the package, in assembly order.
+std::vector<size_t> stage_tasks(const BuildContext& ctx, const Plan& plan) {
+  std::vector<size_t> out;
+  for (size_t p = 0; p < ctx.passes.size(); ++p) {
+    const SelectedPass& sel = ctx.passes[p];
+    for (const variants::VariantKey& key : plan.keys[p]) {
+      for (int s = 0; s < kStageCount; ++s) {
+        Stage stage = Stage(s);
+        if (!sel.ir->program->has_stage(stage)) continue;
+        size_t task = plan.task_of.at(std::make_tuple(p, stage, variants::project(sel.keywords, key, stage)));
+        out.push_back(plan.tasks[task].compiled_by);
+      }
+    }
+  }
+  return out;
+}
+
+bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, Diagnostics& diags) {
   package::Package& pkg = out.package;
+  // A stage program's last user takes its reflection instead of copying it
+  // (most fragment programs have exactly one user).
+  const std::vector<size_t> by_of_stage = stage_tasks(ctx, plan);
+  std::vector<uint32_t> users_left(plan.tasks.size(), 0);
+  for (size_t by : by_of_stage) ++users_left[by];
+  size_t next_stage = 0;
   fill_shader_level(ctx.shader, ctx.passes.empty() ? nullptr : &ctx.passes.front(), pkg);
   std::set<std::string> dependencies{ctx.sources.path(ctx.shader.file)};
   std::map<size_t, uint32_t> blob_of;  // compiling task -> blob index
@@ -114,9 +137,8 @@ bool assemble_package(const BuildContext& ctx, const Plan& plan, CompiledShader&
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
         if (!sel.ir->program->has_stage(stage)) continue;
-        size_t task = plan.task_of.at(std::make_tuple(p, stage, variants::project(sel.keywords, key, stage)));
-        size_t by = plan.tasks[task].compiled_by;
-        const StageEntry& e = plan.tasks[by].entry;
+        size_t by = by_of_stage[next_stage++];
+        StageEntry& e = plan.tasks[by].entry;
         variant_diags.append(e.diags);
         if (!e.ok) {
           variant_ok = false;
@@ -127,7 +149,11 @@ bool assemble_package(const BuildContext& ctx, const Plan& plan, CompiledShader&
           pkg.spirv_blobs.push_back(e.spirv);
           dependencies.insert(e.included_files.begin(), e.included_files.end());
         }
-        pv.stages.push_back({.stage = stage, .blob = it->second, .reflection = e.reflection});
+        if (--users_left[by] == 0) {
+          pv.stages.push_back({.stage = stage, .blob = it->second, .reflection = std::move(e.reflection)});
+        } else {
+          pv.stages.push_back({.stage = stage, .blob = it->second, .reflection = e.reflection});
+        }
       }
       if (variant_ok) pp.variants.push_back(std::move(pv));
       per_variant.push_back(std::move(variant_diags));
@@ -228,6 +254,14 @@ Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const Compile
 Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                          Diagnostics& diags) const {
   auto started = std::chrono::steady_clock::now();
+  auto lap = started;
+  auto seconds_since_lap = [&lap] {
+    auto now = std::chrono::steady_clock::now();
+    double s = std::chrono::duration<double>(now - lap).count();
+    lap = now;
+    return s;
+  };
+  CompileStats::Phases phases;
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
   uint64_t stripped = 0;
@@ -237,10 +271,13 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   const cache::CacheStores stores = cache_stores(options);
   const BuildContext ctx{shader, options, sources, backend_, *passes, stores, driver::worker_count(options.jobs)};
   Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  phases.select = seconds_since_lap();
   uint64_t manifest_hits = driver::preprocess_tasks(ctx, plan);
   size_t compiling = driver::assign_compilers(*passes, plan.tasks);
   std::vector<size_t> to_compile = driver::compiling_tasks(plan);
+  phases.preprocess = seconds_since_lap();
   CompileCounters counters = driver::compile_tasks(ctx, plan, to_compile);
+  phases.compile = seconds_since_lap();
 
   CompiledShader out;
   if (!assemble_package(ctx, plan, out, diags)) return failure("compile errors");
@@ -259,6 +296,8 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.unique_spirv = pkg.spirv_blobs.size();
   out.stats.jobs = ctx.jobs;
   out.programs = program_records(plan.tasks, pkg);
+  phases.assemble = seconds_since_lap();
+  out.stats.phases = phases;
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;
 }

@@ -29,8 +29,11 @@ constexpr size_t kPropertyMinSize = 4 + 4 + 1 + 4 + 4 * 2 + 4 * 4 + 4;
 constexpr size_t kPassMinSize = 4 + 4 + kStateMinSize;
 constexpr size_t kKeywordSetMinSize = 1 + 1 + 1 + 4 + 4;
 constexpr size_t kKeywordSpaceMinSize = 4 * 3;
-constexpr size_t kReflectionMinSize = 1 + 4 + 4 * 6;
-constexpr size_t kStageMinSize = 1 + 4 + kReflectionMinSize;
+using facet::codec::kReflectionMinSize;
+// Format 1 stores each stage's reflection inline; format 2 an index into
+// the reflection table at the start of the variants section.
+constexpr size_t kStageMinSizeV1 = 1 + 4 + kReflectionMinSize;
+constexpr size_t kStageMinSize = 1 + 4 + 4;
 constexpr size_t kVariantMinSize = 4 * 3;
 
 struct SectionRange {
@@ -311,28 +314,60 @@ void decode_keywords(Decoder& d, std::vector<PackagePass>& passes) {
   for (size_t i = 0; i < passes.size() && d.ok(); ++i) passes[i].keywords = decode_keyword_space(d);
 }
 
-PackageVariant decode_variant(Decoder& d) {
+// The reflections a format-2 variants section shares between stages.
+struct ReflectionTable {
+  std::vector<StageReflection> reflections;
+  std::vector<uint64_t> weights;  // reflection_weight of each, charged per reference
+};
+
+ReflectionTable decode_reflection_table(Decoder& d) {
+  ReflectionTable table;
+  uint32_t n = d.count(kReflectionMinSize, "reflection");
+  table.reflections.reserve(n);
+  for (uint32_t i = 0; i < n && d.ok(); ++i) {
+    table.reflections.push_back(facet::codec::decode_reflection(d));
+    table.weights.push_back(facet::codec::reflection_weight(table.reflections.back()));
+  }
+  return table;
+}
+
+StageReflection shared_reflection(Decoder& d, const ReflectionTable& table) {
+  uint64_t at = d.offset();
+  uint32_t index = d.u32();
+  if (!d.ok()) return {};
+  if (index >= table.reflections.size()) {
+    d.fail_at(at, "reflection index " + std::to_string(index) + " out of range (table has " +
+                      std::to_string(table.reflections.size()) + " reflections)");
+    return {};
+  }
+  if (!d.charge(table.weights[index], "reflection references")) return {};
+  return table.reflections[index];
+}
+
+PackageVariant decode_variant(Decoder& d, const ReflectionTable* table) {
   PackageVariant v;
   v.key.choice = d.u32s("key choice");
   v.keywords = d.strs("variant keyword");
-  uint32_t n = d.count(kStageMinSize, "variant stage");
+  uint32_t n = d.count(table ? kStageMinSize : kStageMinSizeV1, "variant stage");
   v.stages.resize(n);
   for (uint32_t i = 0; i < n && d.ok(); ++i) {
     v.stages[i].stage = Stage(d.enum_byte(codec::kMaxStage, "stage"));
     v.stages[i].blob = d.u32();
-    v.stages[i].reflection = codec::decode_reflection(d);
+    v.stages[i].reflection = table ? shared_reflection(d, *table) : facet::codec::decode_reflection(d);
   }
   return v;
 }
 
-void decode_variants(Decoder& d, std::vector<PackagePass>& passes, size_t blob_count) {
+void decode_variants(Decoder& d, std::vector<PackagePass>& passes, size_t blob_count, uint32_t version) {
+  ReflectionTable table;
+  if (version >= 2) table = decode_reflection_table(d);
   if (!expect_pass_count(d, 4, "variant list", passes.size())) return;
   for (PackagePass& pass : passes) {
     uint32_t n = d.count(kVariantMinSize, "variant");
     pass.variants.reserve(n);
     for (uint32_t i = 0; i < n && d.ok(); ++i) {
       uint64_t at = d.offset();
-      pass.variants.push_back(decode_variant(d));
+      pass.variants.push_back(decode_variant(d, version >= 2 ? &table : nullptr));
       const PackageVariant* previous = i ? &pass.variants[i - 1] : nullptr;
       std::string error = codec::check_variant(pass.keywords, pass.variants.back(), previous, blob_count);
       if (d.ok() && !error.empty()) d.fail_at(at, "pass '" + pass.name + "': " + error);
@@ -373,7 +408,7 @@ Package decode_sections(std::span<const uint8_t> bytes, const SectionTable& tabl
   p.spirv_blobs = decode_blobs(blobs);
   blobs.expect_end("blobs");
   Decoder variants = section(bytes, table, SectionId::variants, ctx);
-  decode_variants(variants, p.passes, p.spirv_blobs.size());
+  decode_variants(variants, p.passes, p.spirv_blobs.size(), codec::get_u32(bytes, codec::kVersionOffset));
   variants.expect_end("variants");
   return p;
 }

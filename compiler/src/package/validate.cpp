@@ -1,8 +1,10 @@
 // The invariants of a Package beyond its byte layout (validate_package), and
 // blob deduplication.
 #include <algorithm>
-#include <map>
+#include <unordered_map>
 #include <string>
+
+#include <xxhash.h>
 
 #include "facet/package.h"
 #include "package/codec.h"
@@ -123,19 +125,28 @@ bool validate_package(const Package& package, Diagnostics& diags) {
 }
 
 void deduplicate_blobs(Package& package) {
-  std::map<std::vector<uint32_t>, uint32_t> index;
+  // Hash first, compare words only on a hash match: linear in the blob bytes.
+  std::unordered_multimap<uint64_t, uint32_t> by_hash;
   std::vector<std::vector<uint32_t>> blobs;
+  std::vector<uint32_t> remap(package.spirv_blobs.size(), UINT32_MAX);
+  auto unique_index = [&](uint32_t old_index) {
+    if (remap[old_index] != UINT32_MAX) return remap[old_index];
+    std::vector<uint32_t>& blob = package.spirv_blobs[old_index];
+    uint64_t hash = XXH3_64bits(blob.data(), blob.size() * sizeof(uint32_t));
+    auto [first, last] = by_hash.equal_range(hash);
+    for (auto it = first; it != last; ++it) {
+      if (blobs[it->second] == blob) return remap[old_index] = it->second;
+    }
+    uint32_t index = uint32_t(blobs.size());
+    by_hash.emplace(hash, index);
+    blobs.push_back(std::move(blob));
+    return remap[old_index] = index;
+  };
   for (PackagePass& pass : package.passes) {
     for (PackageVariant& v : pass.variants) {
       for (PackageStage& s : v.stages) {
-        if (s.blob >= package.spirv_blobs.size()) {  // invalid: stays invalid for validate_package
-          s.blob = UINT32_MAX;
-          continue;
-        }
-        const std::vector<uint32_t>& blob = package.spirv_blobs[s.blob];
-        auto [it, inserted] = index.emplace(blob, uint32_t(blobs.size()));
-        if (inserted) blobs.push_back(blob);
-        s.blob = it->second;
+        // An invalid index stays invalid for validate_package.
+        s.blob = s.blob < package.spirv_blobs.size() ? unique_index(s.blob) : UINT32_MAX;
       }
     }
   }

@@ -4,6 +4,7 @@
 #include <xxhash.h>
 
 #include <array>
+#include <unordered_map>
 
 #include "facet/package.h"
 #include "package/codec.h"
@@ -122,7 +123,39 @@ void encode_keywords(Encoder& e, const std::vector<PackagePass>& passes) {
   }
 }
 
+// Stages that share a SPIR-V blob almost always share its reflection, so the
+// variants section starts with a table of distinct reflections and each stage
+// names one by index (format 2).
+class ReflectionIndex {
+ public:
+  uint32_t index_of(const PackageStage& s) {
+    auto [first, last] = by_blob_.equal_range(s.blob);
+    for (auto it = first; it != last; ++it) {
+      if (*unique_[it->second] == s.reflection) return it->second;
+    }
+    uint32_t index = uint32_t(unique_.size());
+    unique_.push_back(&s.reflection);
+    by_blob_.emplace(s.blob, index);
+    return index;
+  }
+  const std::vector<const StageReflection*>& unique() const { return unique_; }
+
+ private:
+  std::vector<const StageReflection*> unique_;
+  std::unordered_multimap<uint32_t, uint32_t> by_blob_;
+};
+
 void encode_variants(Encoder& e, const std::vector<PackagePass>& passes) {
+  ReflectionIndex reflections;
+  std::vector<uint32_t> stage_reflection;
+  for (const PackagePass& p : passes) {
+    for (const PackageVariant& v : p.variants) {
+      for (const PackageStage& s : v.stages) stage_reflection.push_back(reflections.index_of(s));
+    }
+  }
+  e.count(reflections.unique().size());
+  for (const StageReflection* r : reflections.unique()) facet::codec::encode_reflection(e, *r);
+  size_t next = 0;
   e.count(passes.size());
   for (const PackagePass& p : passes) {
     e.count(p.variants.size());
@@ -133,13 +166,16 @@ void encode_variants(Encoder& e, const std::vector<PackagePass>& passes) {
       for (const PackageStage& s : v.stages) {
         e.u8(uint8_t(s.stage));
         e.u32(s.blob);
-        codec::encode_reflection(e, s.reflection);
+        e.u32(stage_reflection[next++]);
       }
     }
   }
 }
 
 void encode_blobs(Encoder& e, const std::vector<std::vector<uint32_t>>& blobs) {
+  size_t bytes = 4;
+  for (const std::vector<uint32_t>& blob : blobs) bytes += 4 + 4 * blob.size();
+  e.bytes().reserve(bytes);  // the largest section by far: grown once, not by doubling
   e.count(blobs.size());
   for (const std::vector<uint32_t>& blob : blobs) e.u32s(blob);
 }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -27,6 +28,7 @@ namespace fs = std::filesystem;
 // What one input produced, before anything is written.
 struct Produced {
   std::string bytes;
+  std::vector<uint8_t> package;  // a binary package, written instead of `bytes` when not empty
   std::string output;  // where: a path, or "" / "-" for standard output
   std::string stats;   // the --stats line, if any
   bool usage_error = false;
@@ -77,14 +79,21 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   auto compiled = compiler.compile(shader, options, sources, diags);
   bar.finish();
   FACET_TRY(compiled);
+  auto encode_started = std::chrono::steady_clock::now();
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
+  double encode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - encode_started).count();
   const CompileStats& s = compiled->stats;
-  Produced out{.bytes = std::string(bytes.begin(), bytes.end()), .output = package_output_path(args, input)};
+  Produced out{.output = package_output_path(args, input)};
   out.stats = fmt::format("facetc: {}: {} passes, {} variants ({} stripped); programs {}, unique after preprocessing {} "
                           "(compiled once each), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
                           input, s.passes, s.variants, s.variants_stripped, s.stage_programs, s.unique_preprocessed,
                           s.unique_spirv,
                           bytes.size(), s.seconds, s.jobs);
+  out.package = std::move(bytes);
+  out.stats += fmt::format("facetc: {}: phases: select {:.3f} s, preprocess {:.3f} s, compile {:.3f} s, "
+                           "assemble {:.3f} s, encode {:.3f} s\n",
+                           input, s.phases.select, s.phases.preprocess, s.phases.compile, s.phases.assemble,
+                           encode_seconds);
   if (!args.cache_dir.empty() || !args.cache_url.empty()) {
     out.stats += fmt::format("facetc: {}: cache: local hits {} / remote hits {} / compiled {}{}; {} of {} programs "
                              "not preprocessed (include manifests current)\n",
@@ -92,7 +101,10 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
                              s.cache_corrupt ? fmt::format(" ({} corrupt entries recompiled)", s.cache_corrupt) : "",
                              s.preprocess_skipped, s.stage_programs);
   }
-  if (args.mode == Mode::dump) out.bytes = package::package_to_json(compiled->package);
+  if (args.mode == Mode::dump) {
+    out.package.clear();
+    out.bytes = package::package_to_json(compiled->package);
+  }
   return out;
 }
 
@@ -213,10 +225,14 @@ bool write_outputs(const FacetcArgs& args, const std::string& input, const Produ
     }
     return bool(write_file_atomically(args.depfile, rule, diags));
   }
+  std::string_view contents = produced.package.empty()
+                                  ? std::string_view(produced.bytes)
+                                  : std::string_view(reinterpret_cast<const char*>(produced.package.data()),
+                                                     produced.package.size());
   if (to_stdout(produced.output)) {
-    console.out.write(produced.bytes.data(), std::streamsize(produced.bytes.size()));
+    console.out.write(contents.data(), std::streamsize(contents.size()));
     console.out.flush();
-  } else if (!write_file_atomically(produced.output, produced.bytes, diags)) {
+  } else if (!write_file_atomically(produced.output, contents, diags)) {
     return false;
   }
   if (!args.write_depfile) return true;

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -635,7 +637,7 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   p.passes[0].variants = {{{{1}}, {"_ON"}, {{Stage::fragment, 0, {}}}}};
   p.spirv_blobs = {{}};
   const char* expected = R"({
-  "format_version": 1,
+  "format_version": 2,
   "shader": {
     "name": "S",
     "lod": 0,
@@ -747,6 +749,91 @@ TEST_F(PackageJsonTest, InvalidUtf8DoesNotThrow) {
   p.shader_name = "\xff\xfe broken";
   std::string json = package_to_json(p);
   EXPECT_NE(json.find("broken"), std::string::npos);
+}
+
+// ---- Format 2: reflections shared between stages ------------------------------
+
+size_t section_length(const std::vector<uint8_t>& b, uint32_t id) {
+  uint64_t v = 0;
+  for (int i = 7; i >= 0; --i) v = (v << 8) | b[40 + 24 * (id - 1) + 16 + size_t(i)];
+  return size_t(v);
+}
+
+Package variants_sharing_one_reflection(size_t count) {
+  Package p;
+  p.shader_name = "Shared";
+  p.passes = {{"P", {}, {}, {}, {}}};
+  p.passes[0].keywords.sets = {{variants::KeywordDirective::multi_compile, false, kAllStages, {}, "multi_compile", {}}};
+  for (size_t i = 0; i < count; ++i) {
+    p.passes[0].keywords.sets[0].keywords.push_back("K" + std::to_string(i));
+    p.passes[0].variants.push_back({{{uint32_t(i)}}, {"K" + std::to_string(i)},
+                                    {{Stage::vertex, 0, rich_reflection(Stage::vertex)}}});
+  }
+  p.spirv_blobs = {{0x07230203, 1, 2}};
+  return p;
+}
+
+TEST(PackageFormat2Test, AReflectionSharedByStagesIsStoredOnce) {
+  std::vector<uint8_t> one = write_package(variants_sharing_one_reflection(1));
+  std::vector<uint8_t> many = write_package(variants_sharing_one_reflection(64));
+  size_t reflection_bytes = section_length(one, 6);  // one reflection dominates the variants section
+  ASSERT_GT(reflection_bytes, 100u);
+  // Each further variant adds its key, keyword and stage entry, not a reflection.
+  EXPECT_LT(section_length(many, 6) - section_length(one, 6), 63 * 32u);
+  Diagnostics diags;
+  auto back = read_package(many, diags);
+  ASSERT_TRUE(back.has_value()) << diags.all()[0].message;
+  expect_same(variants_sharing_one_reflection(64), *back);
+}
+
+TEST(PackageFormat2Test, DifferentReflectionsOfOneBlobBothSurvive) {
+  Package p = variants_sharing_one_reflection(2);
+  p.passes[0].variants[1].stages[0].reflection.entry_point = "other";
+  Diagnostics diags;
+  auto back = read_package(write_package(p), diags);
+  ASSERT_TRUE(back.has_value());
+  expect_same(p, *back);
+}
+
+TEST(PackageFormat2Test, ReflectionIndexOutOfRangeIsAnError) {
+  std::vector<uint8_t> b = write_package(variants_sharing_one_reflection(1));
+  size_t index_at = section_offset(b, 6) + section_length(b, 6) - 4;  // the last stage's reflection index
+  put32(b, index_at, 5);
+  reseal(b);
+  EXPECT_EQ(read_error(b), "corrupt package: reflection index 5 out of range (table has 1 reflections) at byte offset " +
+                               std::to_string(index_at));
+}
+
+TEST(PackageFormat2Test, ReflectionReferencesAreChargedToTheDecodingBudget) {
+  // 2,000 stages naming one large reflection: the decoded size is bounded by the budget, not by trust.
+  Package p = variants_sharing_one_reflection(2000);
+  for (int i = 0; i < 400; ++i) {
+    p.passes[0].variants[0].stages[0].reflection.inputs.push_back({std::string(1000, 'x'), "", uint32_t(i), "float4", 0});
+  }
+  for (PackageVariant& v : p.passes[0].variants) v.stages[0].reflection = p.passes[0].variants[0].stages[0].reflection;
+  std::vector<uint8_t> b = write_package(p);
+  ASSERT_LT(b.size(), 200'000u);  // 2,000 x 400 KB decoded would be 800 MB
+  std::string error = read_error(b);
+  EXPECT_NE(error.find("reflection references expand past the decoding limit"), std::string::npos) << error;
+}
+
+TEST(PackageFormat1Test, AFormat1FileStillReads) {
+  // Written by facetc 0.1.0 before format 2 (examples/shaders/VertexColor.shader, --all-variants).
+  std::ifstream in(std::string(FACET_TESTDATA_DIR) + "/package/vertex_color_format1.facetpkg", std::ios::binary);
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(bytes.empty());
+  Diagnostics diags;
+  auto v1 = read_package(bytes, diags);
+  ASSERT_TRUE(v1.has_value()) << diags.all()[0].message;
+  EXPECT_EQ(v1->version, 1u);
+  ASSERT_FALSE(v1->passes.empty());
+  ASSERT_FALSE(v1->passes[0].variants.empty());
+  EXPECT_FALSE(v1->passes[0].variants[0].stages[0].reflection.inputs.empty());
+  auto v2 = read_package(write_package(*v1), diags);
+  ASSERT_TRUE(v2.has_value());
+  EXPECT_EQ(v2->version, kFormatVersion);
+  v2->version = 1;
+  expect_same(*v1, *v2);
 }
 
 }  // namespace

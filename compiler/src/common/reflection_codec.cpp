@@ -2,9 +2,9 @@
 // encoded size of each element bounds the counts the decoder accepts.
 #include <string>
 
-#include "package/codec.h"
+#include "common/binary_codec.h"
 
-namespace facet::package::codec {
+namespace facet::codec {
 namespace {
 
 // name semantic location type array_size
@@ -149,7 +149,34 @@ std::vector<PropertyBinding> decode_property_bindings(Decoder& d) {
   return out;
 }
 
+// Every element is charged as if it were a fixed-size struct plus its strings.
+constexpr uint64_t kElementWeight = 64;
+
+uint64_t members_weight(const std::vector<BlockMember>& members) {
+  uint64_t w = 0;
+  for (const BlockMember& m : members) {
+    w += kElementWeight + m.name.size() + m.type.size() + 4 * m.array_dims.size() + members_weight(m.members);
+  }
+  return w;
+}
+
 }  // namespace
+
+uint64_t reflection_weight(const StageReflection& r) {
+  uint64_t w = kElementWeight + r.entry_point.size();
+  for (const auto* vars : {&r.inputs, &r.outputs}) {
+    for (const StageVariable& v : *vars) w += kElementWeight + v.name.size() + v.semantic.size() + v.type.size();
+  }
+  for (const UniformBlock& b : r.uniform_blocks) w += kElementWeight + b.name.size() + members_weight(b.members);
+  for (const ResourceBinding& res : r.resources) w += kElementWeight + res.name.size() + res.dim.size();
+  for (const SpecConstant& c : r.spec_constants) {
+    w += kElementWeight + c.name.size() + c.type.size() + c.default_value.size();
+  }
+  for (const PropertyBinding& b : r.property_bindings) {
+    w += kElementWeight + b.property.size() + b.role.size() + b.block.size() + b.member.size();
+  }
+  return w;
+}
 
 void encode_reflection(Encoder& e, const StageReflection& r) {
   e.u8(uint8_t(r.stage));
@@ -204,4 +231,4 @@ StageReflection decode_reflection(Decoder& d) {
   return r;
 }
 
-}  // namespace facet::package::codec
+}  // namespace facet::codec
