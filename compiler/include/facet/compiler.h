@@ -148,11 +148,14 @@ class Compiler {
   Compiler() = default;
 
   // Reads and parses a file. Refuses binary files and files over 64 MiB.
-  Result<ir::Shader> load(const std::string& path, SourceMap& sources, Diagnostics& diags) const;
+  // Surface shaders are lowered into their generated passes here (facet/surface.h);
+  // `surface_options` gives the include paths and defines their code is read with.
+  Result<ir::Shader> load(const std::string& path, SourceMap& sources, Diagnostics& diags,
+                          const backend::BackendOptions& surface_options = {}) const;
   // Parses an in-memory text; `path` names it in diagnostics and anchors
   // relative #includes.
-  Result<ir::Shader> load_source(const std::string& path, std::string text, SourceMap& sources,
-                                 Diagnostics& diags) const;
+  Result<ir::Shader> load_source(const std::string& path, std::string text, SourceMap& sources, Diagnostics& diags,
+                                 const backend::BackendOptions& surface_options = {}) const;
 
   // The passes `options.passes` names (all by default) of the SubShader in
   // use, with their keyword spaces.

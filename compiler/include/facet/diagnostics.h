@@ -28,6 +28,7 @@ enum class DiagId : uint16_t {
 #include "facet/diag/variants.def"
 #include "facet/diag/backend.def"
 #include "facet/diag/package.def"
+#include "facet/diag/surface.def"
 #undef FACET_DIAG
   count_
 };

@@ -102,6 +102,9 @@ struct SourceChunk {
   std::string text;
   SourceSpan span;        // the text's bytes in the original file
   uint32_t first_line = 1;  // 1-based line of text[0]
+  // The file `#line` names; empty: the shader's own file. Generated code
+  // (surface-shader lowering) names a file of its own in the SourceMap.
+  std::string line_file;
 };
 
 // "#pragma name args..." as written; args split on whitespace.

@@ -99,6 +99,23 @@ std::vector<DeclaredResource> declared_resources(const glslang::TIntermediate& i
 
 }  // namespace
 
+GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                            const std::string& entry, const BackendOptions& options, FileIncluder& includer,
+                            const std::function<void(const glslang::TIntermediate&)>& visit) {
+  GlslangOutput out;
+  glslang::TShader shader(to_glslang(stage));
+  const char* text = source.text.c_str();
+  const int length = int(source.text.size());
+  const char* name = source.root_name.c_str();
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  configure(shader, language, stage, entry, options);
+  out.ok = shader.parse(GetDefaultResources(), default_version(language), false, messages_for(language, options),
+                        includer);
+  out.parse_log = shader.getInfoLog();
+  if (out.ok) visit(*shader.getIntermediate());
+  return out;
+}
+
 GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
                           const std::string& entry, const BackendOptions& options, FileIncluder& includer) {
   GlslangOutput out;

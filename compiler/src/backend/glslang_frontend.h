@@ -4,12 +4,17 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "backend/includer.h"
 #include "backend/source_assembly.h"
 #include "facet/backend.h"
+
+namespace glslang {
+class TIntermediate;
+}
 
 namespace facet::backend {
 
@@ -36,6 +41,12 @@ struct GlslangOutput {
 // Compiles `source` for `stage` with entry point `entry` ("main" for GLSL).
 GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
                           const std::string& entry, const BackendOptions& options, FileIncluder& includer);
+
+// Parses only, then hands the AST to `visit` while it is alive; ok when the
+// parse succeeded. For reading the code's structure (program_analysis.h).
+GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                            const std::string& entry, const BackendOptions& options, FileIncluder& includer,
+                            const std::function<void(const glslang::TIntermediate&)>& visit);
 
 // Only the preprocessor; `preprocessed` holds the text when ok.
 GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,

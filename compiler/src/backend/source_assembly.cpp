@@ -63,7 +63,7 @@ std::string take_glsl_version(std::string& body) {
 }
 
 void append_chunk(std::string& out, const ir::SourceChunk& chunk, const std::string& file) {
-  out += fmt::format("#line {} \"{}\"\n", chunk.first_line, file);
+  out += fmt::format("#line {} \"{}\"\n", chunk.first_line, chunk.line_file.empty() ? file : line_file(chunk.line_file));
   out += chunk.text;
   if (chunk.text.empty() || chunk.text.back() != '\n') out += '\n';
 }

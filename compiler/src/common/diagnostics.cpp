@@ -24,6 +24,7 @@ constexpr std::array<DiagInfo, size_t(DiagId::count_)> kDiagTable = {{
 #include "facet/diag/variants.def"
 #include "facet/diag/backend.def"
 #include "facet/diag/package.def"
+#include "facet/diag/surface.def"
 #undef FACET_DIAG
 }};
 

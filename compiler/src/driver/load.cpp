@@ -3,21 +3,27 @@
 #include "facet/compiler.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "facet/surface.h"
 
 namespace facet {
 
-Result<ir::Shader> Compiler::load(const std::string& path, SourceMap& sources, Diagnostics& diags) const {
+Result<ir::Shader> Compiler::load(const std::string& path, SourceMap& sources, Diagnostics& diags,
+                                  const backend::BackendOptions& surface_options) const {
   auto text = read_text_file(path, kMaxShaderBytes, diags);
   FACET_TRY(text);
-  return load_source(path, std::move(*text), sources, diags);
+  return load_source(path, std::move(*text), sources, diags, surface_options);
 }
 
 Result<ir::Shader> Compiler::load_source(const std::string& path, std::string text, SourceMap& sources,
-                                         Diagnostics& diags) const {
+                                         Diagnostics& diags, const backend::BackendOptions& surface_options) const {
   FileId file = sources.add_file(path, std::move(text));
   auto ast = shaderlab::parse(file, sources, {}, diags);
   FACET_TRY(ast);
-  return sema::analyze(*ast, sources, {}, diags);
+  auto shader = sema::analyze(*ast, sources, {}, diags);
+  FACET_TRY(shader);
+  auto lowered = surface::lower_surface_shaders(*shader, surface_options, sources, diags);
+  FACET_TRY(lowered);
+  return shader;
 }
 
 }  // namespace facet

@@ -137,7 +137,7 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
     FACET_TRY(ast);
     return Produced{.bytes = shaderlab::ast_to_json(*ast, sources), .output = args.output};
   }
-  auto shader = compiler.load(input, sources, diags);
+  auto shader = compiler.load(input, sources, diags, compile_options(args, false).backend);
   FACET_TRY(shader);
   switch (args.mode) {
     case Mode::package:

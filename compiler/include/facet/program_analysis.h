@@ -1,0 +1,61 @@
+// What an HLSL program's code declares and touches, read from glslang's AST:
+// its functions, their parameters, and which members of each struct
+// parameter a function reads and writes. Surface-shader lowering uses it to
+// learn which Input fields `surf` reads and which outputs it writes, and
+// which form a lighting function has, from the code rather than by guessing.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "facet/backend.h"
+
+namespace facet::backend {
+
+struct AnalyzedField {
+  std::string name;
+  std::string type;      // "float2", "half3" as float3, or a struct name
+  std::string semantic;  // upper-cased HLSL semantic ("COLOR", "VFACE"), "" when none
+};
+
+struct AnalyzedParam {
+  std::string name;
+  std::string type;  // "float3", or the struct's name
+  bool is_struct = false;
+  bool is_out = false;  // out or inout
+  // Of a struct parameter: the members the function body reads and writes
+  // (sorted, directly or through swizzles); `whole_*` when the parameter is
+  // used as a whole (copied, passed on), which counts as every member.
+  std::vector<std::string> members_read, members_written;
+  bool whole_read = false, whole_written = false;
+
+  bool reads(std::string_view member) const;
+  bool writes(std::string_view member) const;
+};
+
+struct AnalyzedFunction {
+  std::string name;  // as written, without glslang's mangling
+  std::string return_type;
+  std::vector<AnalyzedParam> params;
+};
+
+struct ProgramAnalysis {
+  std::vector<AnalyzedFunction> functions;  // every function defined, in definition order
+  std::map<std::string, std::vector<AnalyzedField>> structs;  // struct types of those functions' parameters
+
+  // The last definition named `name` (user code follows the stdlib), or nullptr.
+  const AnalyzedFunction* find(std::string_view name) const;
+  const std::vector<AnalyzedField>* find_struct(std::string_view name) const;
+};
+
+// Parses `program` as its fragment stage would be parsed (prelude, includes,
+// `keywords` and `extra_defines` defined) and reads the AST; nothing is
+// compiled to SPIR-V. Parse errors are reported at .shader positions. Call
+// while a Backend exists (it owns glslang's process initialisation).
+Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
+                                        const std::vector<std::string>& keywords, const BackendOptions& options,
+                                        SourceMap& sources, Diagnostics& diags);
+
+}  // namespace facet::backend

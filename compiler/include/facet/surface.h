@@ -1,0 +1,26 @@
+// Surface-shader lowering: every `#pragma surface surf Model [options]`
+// program of a SubShader becomes the passes Unity generates for it
+// (ForwardBase, ForwardAdd, ShadowCaster), each a normal vertex/fragment pass
+// in HLSL afterwards (docs/surface-shaders.md).
+#pragma once
+
+#include "facet/backend.h"
+#include "facet/diagnostics.h"
+#include "facet/ir.h"
+#include "facet/result.h"
+#include "facet/source.h"
+
+namespace facet::surface {
+
+// Replaces each SubShader's surface_program with its generated passes,
+// placed before the SubShader's written passes. Which Input fields `surf`
+// reads, which outputs it writes and the lighting function's form are read
+// from glslang's AST of the user's code (facet/program_analysis.h). The
+// generated code is added to `sources` as a file of its own, named
+// "<shader path> [surface PASS]", so that messages in it have positions and
+// `facetc -E` shows it; messages in the user's code keep their .shader lines.
+// Call while a backend::Backend exists.
+Result<void> lower_surface_shaders(ir::Shader& shader, const backend::BackendOptions& options, SourceMap& sources,
+                                   Diagnostics& diags);
+
+}  // namespace facet::surface

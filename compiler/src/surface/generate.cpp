@@ -1,0 +1,310 @@
+#include "surface/generate.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace facet::surface {
+namespace {
+
+constexpr const char* kIncludes =
+    "#include \"UnityCG.cginc\"\n"
+    "#include \"Lighting.cginc\"\n"
+    "#include \"UnityPBSLighting.cginc\"\n"
+    "#include \"AutoLight.cginc\"\n";
+
+// With a tangent-space o.Normal, Input carries the tangent-to-world rows and
+// the World*Vector helpers rotate by them; otherwise they are plain fields.
+constexpr const char* kInternalDataTangent =
+    "#define INTERNAL_DATA half3 internalSurfaceTtoW0; half3 internalSurfaceTtoW1; half3 internalSurfaceTtoW2;\n"
+    "#define WorldNormalVector(data, normal) fixed3(dot(data.internalSurfaceTtoW0, normal), "
+    "dot(data.internalSurfaceTtoW1, normal), dot(data.internalSurfaceTtoW2, normal))\n"
+    "#define WorldReflectionVector(data, normal) reflect(data.worldRefl, half3(dot(data.internalSurfaceTtoW0, "
+    "normal), dot(data.internalSurfaceTtoW1, normal), dot(data.internalSurfaceTtoW2, normal)))\n";
+constexpr const char* kInternalDataWorld =
+    "#define INTERNAL_DATA\n"
+    "#define WorldNormalVector(data, normal) data.worldNormal\n"
+    "#define WorldReflectionVector(data, normal) data.worldRefl\n";
+
+const char* pass_define(GeneratedPass pass) {
+  switch (pass) {
+    case GeneratedPass::forward_base: return "UNITY_PASS_FORWARDBASE";
+    case GeneratedPass::forward_add: return "UNITY_PASS_FORWARDADD";
+    default: return "UNITY_PASS_SHADOWCASTER";
+  }
+}
+
+// Writes the interpolator struct and the two functions, one line at a time.
+class Writer {
+ public:
+  Writer(GeneratedPass pass, const Directive& d, const Shape& s, const std::vector<std::string>& output_fields)
+      : pass_(pass), d_(d), s_(s), output_fields_(output_fields) {}
+
+  void line(std::string text) { out_ += text + "\n"; }
+  std::string semantic() { return fmt::format("TEXCOORD{}", next_texcoord_++); }
+  std::string take() { return std::move(out_); }
+
+  bool shadow() const {
+    return pass_ == GeneratedPass::shadow_caster || pass_ == GeneratedPass::fallback_shadow_caster;
+  }
+  // The fallback caster is Legacy VertexLit's: no user code runs in it.
+  bool runs_user_code() const { return pass_ != GeneratedPass::fallback_shadow_caster; }
+  bool runs_surf() const { return !shadow() || (runs_user_code() && !d_.alpha_test_property.empty()); }
+  bool tangent_frame() const { return s_.writes_normal && !shadow(); }
+  bool has_output(std::string_view name) const {
+    return std::find(output_fields_.begin(), output_fields_.end(), name) != output_fields_.end();
+  }
+  bool interpolated(const InputField& f) const {
+    if (!f.used || !runs_surf()) return false;
+    switch (f.kind) {
+      case InputKind::uv: case InputKind::uv2: case InputKind::color: case InputKind::screen_pos:
+      case InputKind::custom:
+        return true;
+      default: return false;
+    }
+  }
+
+  void interpolators() {
+    line("struct v2f_surf {");
+    next_texcoord_ = 0;
+    if (shadow()) {
+      line("  V2F_SHADOW_CASTER;");
+      next_texcoord_ = 1;  // V2F_SHADOW_CASTER takes TEXCOORD0
+      line(fmt::format("  float3 worldPos : {};", semantic()));
+    } else {
+      line("  UNITY_POSITION(pos);");
+      if (tangent_frame()) {
+        for (int i = 0; i < 3; ++i) line(fmt::format("  float4 tSpace{} : {};", i, semantic()));
+      } else {
+        line(fmt::format("  float3 worldNormal : {};", semantic()));
+        line(fmt::format("  float3 worldPos : {};", semantic()));
+      }
+    }
+    for (const InputField& f : s_.inputs) {
+      if (!interpolated(f)) continue;
+      if (f.kind == InputKind::color) line(fmt::format("  fixed4 {} : COLOR0;", member(f)));
+      else line(fmt::format("  {} {} : {};", f.type, member(f), semantic()));
+    }
+    if (!shadow() && !d_.no_fog) line(fmt::format("  UNITY_FOG_COORDS({})", next_texcoord_++));
+    if (!shadow()) line(fmt::format("  UNITY_SHADOW_COORDS({})", next_texcoord_++));
+    line("};");
+  }
+
+  void vertex_function() {
+    line(fmt::format("v2f_surf vert_surf({} v) {{", s_.vertex_input));
+    line("  v2f_surf o;");
+    line("  UNITY_INITIALIZE_OUTPUT(v2f_surf, o);");
+    if (runs_user_code() && !d_.vertex_function.empty()) {
+      if (s_.vertex_fills_input) {
+        line(fmt::format("  {} customInputData;", s_.input_struct));
+        line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, customInputData);", s_.input_struct));
+        line(fmt::format("  {}(v, customInputData);", d_.vertex_function));
+      } else {
+        line(fmt::format("  {}(v);", d_.vertex_function));
+      }
+    }
+    line("  float3 worldPos = mul(unity_ObjectToWorld, v.vertex).xyz;");
+    if (shadow()) {
+      line("  o.worldPos = worldPos;");
+      line("  TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)");
+    } else {
+      line("  o.pos = UnityObjectToClipPos(v.vertex);");
+      line("  float3 worldNormal = UnityObjectToWorldNormal(v.normal);");
+      if (tangent_frame()) {
+        line("  float3 worldTangent = UnityObjectToWorldDir(v.tangent.xyz);");
+        line("  float3 worldBinormal = cross(worldNormal, worldTangent) * v.tangent.w;");
+        line("  o.tSpace0 = float4(worldTangent.x, worldBinormal.x, worldNormal.x, worldPos.x);");
+        line("  o.tSpace1 = float4(worldTangent.y, worldBinormal.y, worldNormal.y, worldPos.y);");
+        line("  o.tSpace2 = float4(worldTangent.z, worldBinormal.z, worldNormal.z, worldPos.z);");
+      } else {
+        line("  o.worldNormal = worldNormal;");
+        line("  o.worldPos = worldPos;");
+      }
+    }
+    for (const InputField& f : s_.inputs) {
+      if (!interpolated(f)) continue;
+      switch (f.kind) {
+        case InputKind::uv: line(fmt::format("  o.{} = TRANSFORM_TEX(v.texcoord, {});", member(f), f.texture)); break;
+        case InputKind::uv2: line(fmt::format("  o.{} = TRANSFORM_TEX(v.texcoord1, {});", member(f), f.texture)); break;
+        case InputKind::color: line(fmt::format("  o.{} = v.color;", member(f))); break;
+        case InputKind::screen_pos:
+          line(fmt::format("  o.{} = ComputeScreenPos(UnityObjectToClipPos(v.vertex));", member(f)));
+          break;
+        case InputKind::custom:
+          if (s_.vertex_fills_input) line(fmt::format("  o.{} = customInputData.{};", member(f), f.name));
+          break;
+        default: break;
+      }
+    }
+    if (!shadow()) {
+      line("  TRANSFER_SHADOW(o);");
+      if (!d_.no_fog) line("  UNITY_TRANSFER_FOG(o, o.pos);");
+    }
+    line("  return o;");
+    line("}");
+  }
+
+  void fill_input() {
+    line(fmt::format("  {} surfIN;", s_.input_struct));
+    line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, surfIN);", s_.input_struct));
+    for (const InputField& f : s_.inputs) {
+      if (!f.used && f.kind != InputKind::internal) continue;
+      std::string to = "  surfIN." + f.name + " = ";
+      switch (f.kind) {
+        case InputKind::uv: case InputKind::uv2: case InputKind::color: case InputKind::screen_pos:
+        case InputKind::custom:
+          line(to + "IN." + member(f) + ";");
+          break;
+        case InputKind::world_pos: line(to + "worldPos;"); break;
+        case InputKind::view_dir:
+          // Tangent space when surf writes a tangent-space normal, as in Unity.
+          line(to + (tangent_frame() ? "IN.tSpace0.xyz * worldViewDir.x + IN.tSpace1.xyz * worldViewDir.y + "
+                                       "IN.tSpace2.xyz * worldViewDir.z;"
+                                     : "worldViewDir;"));
+          break;
+        case InputKind::world_normal: line(to + (tangent_frame() ? "0.0;" : "worldNormal;")); break;
+        case InputKind::world_refl:
+          line(to + (tangent_frame() ? "-worldViewDir;" : "reflect(-worldViewDir, worldNormal);"));
+          break;
+        case InputKind::face: line(to + "facing;"); break;
+        case InputKind::internal:
+          if (tangent_frame()) line(to + "IN.tSpace" + f.name.substr(f.name.size() - 1) + ".xyz;");
+          break;
+      }
+    }
+  }
+
+  void run_surf() {
+    line(fmt::format("  {} o;", s_.output_struct));
+    line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, o);", s_.output_struct));
+    if (has_output("Occlusion")) line("  o.Occlusion = 1.0;");
+    if (has_output("Normal")) line(tangent_frame() ? "  o.Normal = fixed3(0, 0, 1);" : "  o.Normal = worldNormal;");
+    line(fmt::format("  {}(surfIN, o);", d_.surface_function));
+    if (!d_.alpha_test_property.empty()) line(fmt::format("  clip(o.Alpha - {});", d_.alpha_test_property));
+  }
+
+  void light() {
+    bool base = pass_ == GeneratedPass::forward_base;
+    line("  UNITY_LIGHT_ATTENUATION(atten, IN, worldPos);");
+    if (tangent_frame()) {
+      line("  float3 worldN = float3(dot(IN.tSpace0.xyz, o.Normal), dot(IN.tSpace1.xyz, o.Normal), "
+           "dot(IN.tSpace2.xyz, o.Normal));");
+      line("  o.Normal = normalize(worldN);");
+    }
+    line("  fixed4 c = 0;");
+    std::string fn = "Lighting" + d_.model;
+    if (s_.lighting == LightingForm::gi || s_.lighting == LightingForm::view_gi) {
+      line("  UnityGI gi;");
+      line("  UNITY_INITIALIZE_OUTPUT(UnityGI, gi);");
+      line("  gi.indirect.diffuse = 0;");
+      line("  gi.indirect.specular = 0;");
+      line("  gi.light.color = _LightColor0.rgb;");
+      line("  gi.light.dir = lightDir;");
+      if (base && !d_.no_ambient) {
+        line("  UnityGIInput giInput;");
+        line("  UNITY_INITIALIZE_OUTPUT(UnityGIInput, giInput);");
+        line("  giInput.light = gi.light;");
+        line("  giInput.worldPos = worldPos;");
+        line("  giInput.worldViewDir = worldViewDir;");
+        line("  giInput.atten = atten;");
+        line("  giInput.ambient = 0;  // SH is evaluated per pixel (ShadeSHPerPixel)");
+        line("  giInput.probeHDR[0] = unity_SpecCube0_HDR;");
+        line(fmt::format("  {}_GI(o, giInput, gi);", fn));
+      } else {
+        line("  gi.light.color *= atten;");
+      }
+      line(s_.lighting == LightingForm::gi ? fmt::format("  c += {}(o, gi);", fn)
+                                           : fmt::format("  c += {}(o, worldViewDir, gi);", fn));
+    } else {
+      line(s_.lighting == LightingForm::light_atten ? fmt::format("  c += {}(o, lightDir, atten);", fn)
+                                                    : fmt::format("  c += {}(o, lightDir, worldViewDir, atten);", fn));
+      if (base && !d_.no_ambient && has_output("Albedo")) {
+        line("  c.rgb += o.Albedo * ShadeSH9(float4(o.Normal, 1.0));");
+      }
+    }
+    if (base && has_output("Emission")) line("  c.rgb += o.Emission;");
+  }
+
+  void fragment_function() {
+    bool face = std::any_of(s_.inputs.begin(), s_.inputs.end(),
+                            [&](const InputField& f) { return f.kind == InputKind::face && f.used && runs_surf(); });
+    line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", face ? ", float facing : VFACE" : ""));
+    if (shadow()) {
+      line("  float3 worldPos = IN.worldPos;");
+      line("  float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
+      line("  float3 worldNormal = float3(0, 0, 1);");
+      if (runs_surf()) {
+        fill_input();
+        run_surf();
+      }
+      line("  SHADOW_CASTER_FRAGMENT(IN)");
+      line("}");
+      return;
+    }
+    line(tangent_frame() ? "  float3 worldPos = float3(IN.tSpace0.w, IN.tSpace1.w, IN.tSpace2.w);"
+                         : "  float3 worldPos = IN.worldPos;");
+    line(tangent_frame() ? "  float3 worldNormal = normalize(float3(IN.tSpace0.z, IN.tSpace1.z, IN.tSpace2.z));"
+                         : "  float3 worldNormal = normalize(IN.worldNormal);");
+    line("  float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
+    line("  float3 lightDir = normalize(UnityWorldSpaceLightDir(worldPos));");
+    fill_input();
+    run_surf();
+    light();
+    if (!d_.final_color_function.empty()) line(fmt::format("  {}(surfIN, o, c);", d_.final_color_function));
+    if (!d_.no_fog) line("  UNITY_APPLY_FOG(IN.fogCoord, c);");
+    if (d_.alpha == AlphaMode::none && d_.decal == DecalMode::none && !d_.keep_alpha) line("  UNITY_OPAQUE_ALPHA(c.a);");
+    line("  return c;");
+    line("}");
+  }
+
+ private:
+  static std::string member(const InputField& f) { return "surf_" + f.name; }
+
+  GeneratedPass pass_;
+  const Directive& d_;
+  const Shape& s_;
+  const std::vector<std::string>& output_fields_;
+  std::string out_;
+  int next_texcoord_ = 0;
+};
+
+}  // namespace
+
+std::string analysis_prologue() {
+  return std::string("#define SHADER_TARGET_SURFACE_ANALYSIS 1\n#define UNITY_PASS_FORWARDBASE 1\n") + kIncludes +
+         kInternalDataTangent;
+}
+
+GeneratedCode generate(GeneratedPass pass, const Directive& directive, const Shape& shape,
+                       const std::vector<std::string>& output_fields,
+                       const std::function<bool(const std::string&)>& declared) {
+  GeneratedCode code;
+  code.prologue = fmt::format("#define {} 1\n", pass_define(pass));
+  if (directive.alpha == AlphaMode::premultiply) code.prologue += "#define _ALPHAPREMULTIPLY_ON 1\n";
+  code.prologue += kIncludes;
+  code.prologue += shape.writes_normal ? kInternalDataTangent : kInternalDataWorld;
+
+  Writer w(pass, directive, shape, output_fields);
+  std::vector<std::string> scale_offsets;
+  for (const InputField& f : shape.inputs) {
+    if ((f.kind == InputKind::uv || f.kind == InputKind::uv2) && w.interpolated(f)) {
+      std::string st = f.texture + "_ST";
+      if (!declared(st) && std::find(scale_offsets.begin(), scale_offsets.end(), st) == scale_offsets.end()) {
+        scale_offsets.push_back(st);
+      }
+    }
+  }
+  for (const std::string& st : scale_offsets) w.line(fmt::format("float4 {};", st));
+  // Like Unity, the alphatest property needs no declaration of the user's.
+  if (!directive.alpha_test_property.empty() && !declared(directive.alpha_test_property)) {
+    w.line(fmt::format("fixed {};", directive.alpha_test_property));
+  }
+  w.interpolators();
+  w.vertex_function();
+  w.fragment_function();
+  code.epilogue = w.take();
+  return code;
+}
+
+}  // namespace facet::surface

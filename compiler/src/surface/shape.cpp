@@ -1,0 +1,140 @@
+#include "surface/shape.h"
+
+#include <fmt/format.h>
+
+namespace facet::surface {
+namespace {
+
+InputField classify(const backend::AnalyzedField& f) {
+  InputField in{.name = f.name, .type = f.type};
+  auto is = [&](std::string_view n) { return f.name == n; };
+  if (f.name.starts_with("uv2_")) {
+    in.kind = InputKind::uv2;
+    in.texture = f.name.substr(4);
+  } else if (f.name.starts_with("uv_")) {
+    in.kind = InputKind::uv;
+    in.texture = f.name.substr(3);
+  } else if (is("viewDir")) {
+    in.kind = InputKind::view_dir;
+  } else if (is("worldPos")) {
+    in.kind = InputKind::world_pos;
+  } else if (is("worldNormal")) {
+    in.kind = InputKind::world_normal;
+  } else if (is("worldRefl")) {
+    in.kind = InputKind::world_refl;
+  } else if (is("screenPos")) {
+    in.kind = InputKind::screen_pos;
+  } else if (f.semantic == "COLOR" || f.semantic == "COLOR0") {
+    in.kind = InputKind::color;
+  } else if (f.semantic == "VFACE" || f.semantic == "SV_ISFRONTFACE") {
+    in.kind = InputKind::face;
+  } else if (f.name.starts_with("internalSurfaceTtoW")) {
+    in.kind = InputKind::internal;
+  }
+  return in;
+}
+
+const backend::AnalyzedFunction* require(const backend::ProgramAnalysis& analysis, const std::string& name,
+                                         const char* role, const Directive& d, Diagnostics& diags) {
+  const backend::AnalyzedFunction* f = analysis.find(name);
+  if (!f) {
+    diags.add(DiagId::surface_missing_function, d.span, fmt::format("{} '{}' is not defined", role, name));
+  }
+  return f;
+}
+
+bool signature_error(const Directive& d, Diagnostics& diags, std::string message, std::string expected) {
+  diags.add(DiagId::surface_bad_signature, d.span, std::move(message)).note({}, std::move(expected));
+  return false;
+}
+
+bool read_lighting(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+  const std::string name = "Lighting" + d.model;
+  const backend::AnalyzedFunction* f = require(analysis, name, "the lighting function", d, diags);
+  if (!f) return false;
+  const auto& p = f->params;
+  const char* forms = "forms: (s, UnityGI gi), (s, half3 viewDir, UnityGI gi), (s, half3 lightDir, half atten), "
+                      "(s, half3 lightDir, half3 viewDir, half atten)";
+  if (p.size() < 2 || p.size() > 4 || !p[0].is_struct) {
+    return signature_error(d, diags, fmt::format("'{}' has no lighting-function form", name), forms);
+  }
+  if (p[0].type != s.output_struct) {
+    return signature_error(d, diags,
+                           fmt::format("'{}' takes '{}' but '{}' writes '{}'", name, p[0].type, d.surface_function,
+                                       s.output_struct),
+                           "the lighting function's first parameter is the surface output struct");
+  }
+  if (p.size() == 2 && p[1].type == "UnityGI") s.lighting = LightingForm::gi;
+  else if (p.size() == 3 && p[2].type == "UnityGI") s.lighting = LightingForm::view_gi;
+  else if (p.size() == 3) s.lighting = LightingForm::light_atten;
+  else if (p.size() == 4) s.lighting = LightingForm::light_view_atten;
+  else return signature_error(d, diags, fmt::format("'{}' has no lighting-function form", name), forms);
+  s.has_gi_function = analysis.find(name + "_GI") != nullptr;
+  bool gi_form = s.lighting == LightingForm::gi || s.lighting == LightingForm::view_gi;
+  if (gi_form && !s.has_gi_function) {
+    diags.add(DiagId::surface_missing_gi, d.span,
+              fmt::format("lighting model '{}' takes UnityGI but '{}_GI' is not defined", d.model, name))
+        .note({}, fmt::format("define 'inline void {}_GI({} s, UnityGIInput data, inout UnityGI gi)', e.g. "
+                              "'gi = UnityGlobalIllumination(data, 1.0, s.Normal);'",
+                              name, s.output_struct));
+    return false;
+  }
+  return true;
+}
+
+bool read_vertex_modifier(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+  if (d.vertex_function.empty()) return true;
+  const backend::AnalyzedFunction* f = require(analysis, d.vertex_function, "the vertex modifier", d, diags);
+  if (!f) return false;
+  const auto& p = f->params;
+  if (p.empty() || p.size() > 2 || !p[0].is_struct || (p.size() == 2 && p[1].type != s.input_struct)) {
+    return signature_error(d, diags, fmt::format("vertex modifier '{}' has the wrong parameters", d.vertex_function),
+                           fmt::format("write 'void {}(inout appdata_full v)' or 'void {}(inout appdata_full v, out {} o)'",
+                                       d.vertex_function, d.vertex_function, s.input_struct));
+  }
+  s.vertex_input = p[0].type;
+  s.vertex_fills_input = p.size() == 2;
+  return true;
+}
+
+}  // namespace
+
+Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directive& d, Diagnostics& diags) {
+  Shape s;
+  const backend::AnalyzedFunction* surf = require(analysis, d.surface_function, "the surface function", d, diags);
+  if (!surf) return failure("no surface function");
+  if (surf->params.size() != 2 || !surf->params[0].is_struct || !surf->params[1].is_struct || !surf->params[1].is_out) {
+    signature_error(d, diags, fmt::format("surface function '{}' has the wrong parameters", d.surface_function),
+                    fmt::format("write 'void {}(Input IN, inout SurfaceOutputStandard o)' (or another output struct)",
+                                d.surface_function));
+    return failure("bad surf");
+  }
+  s.input_struct = surf->params[0].type;
+  s.output_struct = surf->params[1].type;
+  const backend::AnalyzedParam& in = surf->params[0];
+  const backend::AnalyzedParam& out = surf->params[1];
+  s.writes_normal = out.writes("Normal");
+  s.writes_emission = out.writes("Emission");
+  s.writes_alpha = out.writes("Alpha");
+  const backend::AnalyzedFunction* final_color = nullptr;
+  if (!d.final_color_function.empty()) {
+    final_color = require(analysis, d.final_color_function, "the final colour function", d, diags);
+    if (!final_color) return failure("no finalcolor");
+  }
+  if (const auto* fields = analysis.find_struct(s.input_struct)) {
+    for (const backend::AnalyzedField& f : *fields) {
+      InputField field = classify(f);
+      field.used = in.reads(f.name) ||
+                   (final_color && !final_color->params.empty() && final_color->params[0].reads(f.name));
+      s.has_internal_data = s.has_internal_data || field.kind == InputKind::internal;
+      s.inputs.push_back(std::move(field));
+    }
+  }
+  if (const auto* fields = analysis.find_struct(s.output_struct)) {
+    for (const backend::AnalyzedField& f : *fields) s.output_has_occlusion = s.output_has_occlusion || f.name == "Occlusion";
+  }
+  if (!read_lighting(analysis, d, s, diags) || !read_vertex_modifier(analysis, d, s, diags)) return failure("bad functions");
+  return s;
+}
+
+}  // namespace facet::surface

@@ -1,0 +1,235 @@
+// Surface-shader lowering: which passes and keywords each example surface
+// shader produces, what the AST analysis finds, and the errors for bad
+// directives and functions.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "facet/compiler.h"
+
+namespace facet {
+namespace {
+
+std::string example(const std::string& name) { return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name; }
+
+struct Loaded {
+  SourceMap sources;
+  Diagnostics diags;
+  std::optional<ir::Shader> shader;
+};
+
+std::unique_ptr<Loaded> load(const Compiler& compiler, const std::string& path) {
+  auto out = std::make_unique<Loaded>();
+  auto shader = compiler.load(path, out->sources, out->diags);
+  if (shader) out->shader = std::move(*shader);
+  return out;
+}
+
+std::unique_ptr<Loaded> load_text(const Compiler& compiler, const std::string& text) {
+  auto out = std::make_unique<Loaded>();
+  auto shader = compiler.load_source("surface_test.shader", text, out->sources, out->diags);
+  if (shader) out->shader = std::move(*shader);
+  return out;
+}
+
+// "FORWARD:ForwardBase[multi_compile_fwdbase,multi_compile_fog,...]" per pass.
+std::vector<std::string> pass_summary(const Compiler& compiler, const ir::Shader& shader) {
+  Diagnostics diags;
+  auto passes = compiler.select_passes(shader, {}, diags);
+  std::vector<std::string> out;
+  if (!passes) return out;
+  for (const SelectedPass& p : *passes) {
+    std::string line = p.ir->name + ":" + p.ir->tag("LightMode") + "[";
+    std::vector<std::string> pragmas;
+    for (const variants::KeywordSet& set : p.keywords.sets) {
+      if (pragmas.empty() || pragmas.back() != set.pragma) pragmas.push_back(set.pragma);
+    }
+    for (size_t i = 0; i < pragmas.size(); ++i) line += (i ? "," : "") + pragmas[i];
+    out.push_back(line + "]");
+  }
+  return out;
+}
+
+std::string generated_text(const Loaded& l, const std::string& pass) {
+  for (FileId f = 0; f < l.sources.file_count(); ++f) {
+    if (l.sources.path(f).ends_with("[surface " + pass + "]")) return l.sources.text(f);
+  }
+  return "";
+}
+
+struct Expected {
+  std::string file;
+  std::vector<std::string> passes;
+};
+
+class SurfaceExampleTest : public testing::TestWithParam<Expected> {};
+
+TEST_P(SurfaceExampleTest, ProducesTheExpectedPassesAndKeywordSets) {
+  Compiler compiler;
+  auto l = load(compiler, example(GetParam().file));
+  ASSERT_TRUE(l->shader) << (l->diags.size() ? l->diags.all()[0].message : "");
+  EXPECT_FALSE(l->diags.has_errors());
+  EXPECT_EQ(pass_summary(compiler, *l->shader), GetParam().passes);
+}
+
+const std::string kBase = "FORWARD:ForwardBase[multi_compile_fwdbase,multi_compile_fog,multi_compile_instancing]";
+const std::string kAdd = "FORWARD_DELTA:ForwardAdd[multi_compile_fwdadd,multi_compile_fog]";
+const std::string kAddFull = "FORWARD_DELTA:ForwardAdd[multi_compile_fwdadd_fullshadows,multi_compile_fog]";
+const std::string kShadow = "ShadowCaster:ShadowCaster[multi_compile_shadowcaster,multi_compile_instancing]";
+
+INSTANTIATE_TEST_SUITE_P(
+    Examples, SurfaceExampleTest,
+    testing::Values(Expected{"SurfaceLambertVertex.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceBlinnPhongNormal.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceStandard.shader", {kBase, kAddFull, kShadow}},
+                    Expected{"SurfaceStandardSpecular.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceCustomGI.shader", {kBase, kAdd, kShadow}},
+                    // noforwardadd and no Fallback: one pass
+                    Expected{"SurfaceCustomOutput.shader", {kBase}},
+                    Expected{"SurfaceTranslucent.shader", {kBase, kAddFull, kShadow}},
+                    Expected{"SurfaceReflection.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceAlpha.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceCutout.shader", {kBase, kAdd, kShadow}}),
+    [](const auto& info) { return info.param.file.substr(0, info.param.file.find('.')); });
+
+TEST(SurfaceLoweringTest, EveryExampleVariantCompiles) {
+  Compiler compiler;
+  for (const char* name : {"SurfaceStandard.shader", "SurfaceCutout.shader", "SurfaceCustomOutput.shader"}) {
+    auto l = load(compiler, example(name));
+    ASSERT_TRUE(l->shader) << name;
+    CompileOptions options;
+    options.jobs = 2;
+    auto compiled = compiler.compile(*l->shader, options, l->sources, l->diags);
+    ASSERT_TRUE(compiled) << name << ": " << (l->diags.size() ? l->diags.all()[0].message : "");
+    EXPECT_GT(compiled->stats.variants, 30u) << name;
+  }
+}
+
+TEST(SurfaceLoweringTest, OnlyInputFieldsSurfReadsAreInterpolated) {
+  Compiler compiler;
+  auto l = load(compiler, example("SurfaceStandard.shader"));
+  ASSERT_TRUE(l->shader);
+  std::string code = generated_text(*l, "FORWARD");
+  EXPECT_NE(code.find("surf_uv_MainTex"), std::string::npos) << code;
+  EXPECT_EQ(code.find("surf_worldPos"), std::string::npos) << "worldPos is declared but never read";
+}
+
+TEST(SurfaceLoweringTest, WritingTheNormalGivesATangentFrame) {
+  Compiler compiler;
+  auto normal_mapped = load(compiler, example("SurfaceBlinnPhongNormal.shader"));
+  auto plain = load(compiler, example("SurfaceStandardSpecular.shader"));
+  ASSERT_TRUE(normal_mapped->shader && plain->shader);
+  EXPECT_NE(generated_text(*normal_mapped, "FORWARD").find("tSpace0"), std::string::npos);
+  EXPECT_EQ(generated_text(*plain, "FORWARD").find("tSpace0"), std::string::npos);
+}
+
+TEST(SurfaceLoweringTest, LightingFormsAreReadFromTheCode) {
+  Compiler compiler;
+  auto custom_gi = load(compiler, example("SurfaceCustomGI.shader"));
+  auto legacy = load(compiler, example("SurfaceCustomOutput.shader"));
+  ASSERT_TRUE(custom_gi->shader && legacy->shader);
+  std::string gi = generated_text(*custom_gi, "FORWARD");
+  EXPECT_NE(gi.find("LightingWrapGI_GI(o, giInput, gi);"), std::string::npos);
+  EXPECT_NE(gi.find("c += LightingWrapGI(o, gi);"), std::string::npos);
+  EXPECT_EQ(generated_text(*custom_gi, "FORWARD_DELTA").find("_GI(o"), std::string::npos) << "no GI in ForwardAdd";
+  EXPECT_NE(generated_text(*legacy, "FORWARD").find("c += LightingToon(o, lightDir, atten);"), std::string::npos);
+}
+
+TEST(SurfaceLoweringTest, ForwardAddIsAdditiveWithoutDepthWrites) {
+  Compiler compiler;
+  auto l = load(compiler, example("SurfaceAlpha.shader"));
+  ASSERT_TRUE(l->shader);
+  const auto& passes = l->shader->subshaders[0].passes;
+  ASSERT_EQ(passes.size(), 3u);
+  ASSERT_EQ(passes[0].state.blend.size(), 1u);  // alpha:fade
+  EXPECT_EQ(passes[0].state.blend[0].src.literal, "SrcAlpha");
+  EXPECT_EQ(passes[0].state.blend[0].dst.literal, "OneMinusSrcAlpha");
+  ASSERT_EQ(passes[1].state.blend.size(), 1u);
+  EXPECT_EQ(passes[1].state.blend[0].src.literal, "SrcAlpha");
+  EXPECT_EQ(passes[1].state.blend[0].dst.literal, "One");
+  ASSERT_TRUE(passes[1].state.zwrite);
+  EXPECT_EQ(passes[1].state.zwrite->literal, "Off");
+  EXPECT_TRUE(passes[2].state.blend.empty());
+}
+
+TEST(SurfaceLoweringTest, ErrorsInTheUsersCodeKeepTheirShaderLines) {
+  Compiler compiler;
+  std::string text = R"(Shader "T" { SubShader { CGPROGRAM
+#pragma surface surf Lambert
+struct Input { float2 uv_MainTex; };
+void surf(Input IN, inout SurfaceOutput o) {
+  o.Albedo = undefined_thing;
+}
+ENDCG } })";
+  auto l = load_text(compiler, text);
+  ASSERT_FALSE(l->shader);
+  ASSERT_TRUE(l->diags.has_errors());
+  const Diagnostic& d = l->diags.all()[0];
+  EXPECT_NE(d.message.find("undefined_thing"), std::string::npos) << d.message;
+  EXPECT_EQ(l->sources.path(d.span.file), "surface_test.shader");
+  EXPECT_EQ(l->sources.line_column(d.span.file, d.span.begin).line, 5u);
+}
+
+struct BadCase {
+  const char* name;
+  std::string code;
+  std::string message;
+};
+
+class SurfaceBadInputTest : public testing::TestWithParam<BadCase> {};
+
+TEST_P(SurfaceBadInputTest, IsAClearError) {
+  Compiler compiler;
+  auto l = load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n" + GetParam().code + "\nENDCG } }");
+  ASSERT_FALSE(l->shader);
+  ASSERT_TRUE(l->diags.has_errors());
+  std::string all;
+  for (const Diagnostic& d : l->diags.all()) all += d.message + "\n";
+  EXPECT_NE(all.find(GetParam().message), std::string::npos) << all;
+}
+
+const std::string kInput = "struct Input { float2 uv_MainTex; };\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SurfaceBadInputTest,
+    testing::Values(
+        BadCase{"NoModel", "#pragma surface surf\n", "needs a surface function and a lighting model"},
+        BadCase{"MissingSurf", "#pragma surface surf Lambert\n" + kInput, "the surface function 'surf' is not defined"},
+        BadCase{"SurfWithOneParameter",
+                "#pragma surface surf Lambert\n" + kInput + "void surf(Input IN) {}\n",
+                "surface function 'surf' has the wrong parameters"},
+        BadCase{"UnknownModel",
+                "#pragma surface surf Nope\n" + kInput + "void surf(Input IN, inout SurfaceOutput o) {}\n",
+                "the lighting function 'LightingNope' is not defined"},
+        BadCase{"CustomGIModelWithoutGI",
+                "#pragma surface surf Mine\n" + kInput +
+                    "half4 LightingMine(SurfaceOutput s, UnityGI gi) { return 0; }\n"
+                    "void surf(Input IN, inout SurfaceOutput o) {}\n",
+                "'LightingMine_GI' is not defined"},
+        BadCase{"OutputStructMismatch",
+                "#pragma surface surf Standard\n" + kInput + "void surf(Input IN, inout SurfaceOutput o) {}\n",
+                "'LightingStandard' takes 'SurfaceOutputStandard' but 'surf' writes 'SurfaceOutput'"},
+        BadCase{"BadAlphaMode",
+                "#pragma surface surf Lambert alpha:sometimes\n" + kInput +
+                    "void surf(Input IN, inout SurfaceOutput o) {}\n",
+                "unknown alpha mode 'sometimes'"},
+        BadCase{"MissingVertexModifier",
+                "#pragma surface surf Lambert vertex:vert\n" + kInput +
+                    "void surf(Input IN, inout SurfaceOutput o) {}\n",
+                "the vertex modifier 'vert' is not defined"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SurfaceLoweringTest, UnknownOptionIsAWarningNotAnError) {
+  Compiler compiler;
+  auto l = load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert sparkles\n" + kInput +
+                                   "void surf(Input IN, inout SurfaceOutput o) {}\nENDCG } }");
+  ASSERT_TRUE(l->shader);
+  ASSERT_EQ(l->diags.size(), 1u);
+  EXPECT_EQ(l->diags.all()[0].severity, Severity::warning);
+  EXPECT_NE(l->diags.all()[0].message.find("unknown surface shader option 'sparkles'"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace facet
