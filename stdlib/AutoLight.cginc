@@ -11,13 +11,27 @@
 
 #define UNITY_ATTEN_CHANNEL r
 
+// Shadow-coordinate types and shadow-map declarations, as Unity spells them.
+#define unityShadowCoord float
+#define unityShadowCoord2 float2
+#define unityShadowCoord3 float3
+#define unityShadowCoord4 float4
+#define unityShadowCoord4x4 float4x4
+#define UNITY_DECLARE_SHADOWMAP(tex) sampler2D tex
+#define UNITY_SAMPLE_SHADOW(tex, coord) (tex2D(tex, (coord).xy).r >= (coord).z ? 1.0 : 0.0)
+#define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, (coord).xyz / (coord).w)
+
 // ---- shadows (not implemented: fully lit) ------------------------------------
+// The same expansion for every SHADOWS_* keyword (SHADOWS_SCREEN,
+// SHADOWS_DEPTH, SHADOWS_CUBE, SHADOWS_SOFT, ...) and without one.
 #define SHADOW_COORDS(idx1)
 #define UNITY_SHADOW_COORDS(idx1)
 #define TRANSFER_SHADOW(a)
 #define UNITY_TRANSFER_SHADOW(a, coord)
 #define SHADOW_ATTENUATION(a) 1.0
 #define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
+#define UNITY_SHADOW_W(_w) _w
+#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos)
 
 // ---- light coordinates ----------------------------------------------------------
 // LIGHTING_COORDS(idx1, idx2) adds the interpolators (light space position in

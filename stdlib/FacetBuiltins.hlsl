@@ -60,6 +60,7 @@ cbuffer FacetPerLight : register(b0, space1)
     float4 _FacetSpotParams;            // x = cos(outer half angle), y = 1/(cos(inner) - cos(outer))
     float4 _LightShadowData;            // x = shadow strength complement (1 - strength)
     float4x4 unity_WorldToShadow[4];
+    float4 unity_LightShadowBias;       // ShadowCaster: x = depth bias (clip space), y = 1 to clamp to the near plane, z = normal offset (world units)
 };
 sampler2D _LightTexture0 : register(s1, space1);          // light cookie (not used by facet's attenuation yet)
 sampler2D _ShadowMapTexture : register(s2, space1);

@@ -62,6 +62,24 @@ float3 FacetUnpackNormal(float4 packed)
 #endif
 }
 
+// The same with the tangent-plane part scaled by `scale` (normal-map
+// strength); z is rebuilt after scaling so the result stays unit length
+// (for |scale| <= 1 and in-range samples).
+float3 FacetUnpackScaleNormal(float4 packed, float scale)
+{
+#if defined(UNITY_NO_DXT5nm)
+    float3 n = packed.xyz * 2.0 - 1.0;
+    n.xy *= scale;
+    return n;
+#else
+    packed.x *= packed.w;
+    float3 n;
+    n.xy = (packed.xy * 2.0 - 1.0) * scale;
+    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
+    return n;
+#endif
+}
+
 // ---- HDR textures ---------------------------------------------------------------
 // instructions: x = multiplier, y = exponent applied to alpha, w = 1 when
 // alpha carries a range (RGBM), 0 when the texture is plain HDR.
@@ -75,13 +93,19 @@ float3 FacetDecodeHDR(float4 data, float4 instructions)
 // Irradiance for a unit world normal n (n.w must be 1): the L0+L1 terms are a
 // dot product with unity_SHA*, the L2 terms use n.xyzz * n.yzzx and
 // n.x^2 - n.y^2 (Sloan, "Stupid Spherical Harmonics Tricks", 2008).
+// FacetSHEval takes the seven coefficient vectors as arguments (for tests
+// and for SH data other than the environment's).
+float3 FacetSHEval(float4 n, float4 Ar, float4 Ag, float4 Ab, float4 Br, float4 Bg, float4 Bb, float4 C)
+{
+    float3 l01 = float3(dot(Ar, n), dot(Ag, n), dot(Ab, n));
+    float4 b = n.xyzz * n.yzzx;
+    float3 l2 = float3(dot(Br, b), dot(Bg, b), dot(Bb, b));
+    l2 += C.rgb * (n.x * n.x - n.y * n.y);
+    return max(l01 + l2, 0.0);
+}
 float3 FacetShadeSH9(float4 n)
 {
-    float3 l01 = float3(dot(unity_SHAr, n), dot(unity_SHAg, n), dot(unity_SHAb, n));
-    float4 b = n.xyzz * n.yzzx;
-    float3 l2 = float3(dot(unity_SHBr, b), dot(unity_SHBg, b), dot(unity_SHBb, b));
-    l2 += unity_SHC.rgb * (n.x * n.x - n.y * n.y);
-    return max(l01 + l2, 0.0);
+    return FacetSHEval(n, unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC);
 }
 
 // ---- fog -------------------------------------------------------------------------

@@ -158,6 +158,119 @@ half3 ShadeSH9(half4 normal)
 
 #define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
 
+// ---- ambient / probes -----------------------------------------------------------------------
+// SH is sampled in every pass that adds indirect light, i.e. all but
+// ForwardAdd (facet has no lightmaps, so LIGHTPROBE_SH is not required).
+#if defined(UNITY_PASS_FORWARDADD) || defined(UNITY_PASS_SHADOWCASTER)
+#define UNITY_SHOULD_SAMPLE_SH 0
+#else
+#define UNITY_SHOULD_SAMPLE_SH 1
+#endif
+// The reflection used when glossy reflections are off: the environment's
+// average radiance, from the SH constant term (FacetGI.hlsl).
+#define unity_IndirectSpecColor float4(max(float3(unity_SHAr.w, unity_SHAg.w, unity_SHAb.w), 0.0), 1.0)
+
+// ---- parallax ---------------------------------------------------------------------------------
+// UV offset along the tangent-space view direction for a height h (0..1)
+// sampled from a height map, scaled by `height` (Unity's offset-limited form).
+inline float2 ParallaxOffset(half h, half height, half3 viewDir)
+{
+    h = h * height - height / 2.0;
+    float3 v = normalize(viewDir);
+    v.z += 0.42;
+    return h * (v.xy / v.z);
+}
+
+// ---- packing ----------------------------------------------------------------------------------
+// A 0..1 float in four 8-bit channels and back.
+inline float4 EncodeFloatRGBA(float v)
+{
+    float4 kEncodeMul = float4(1.0, 255.0, 65025.0, 16581375.0);
+    float kEncodeBit = 1.0 / 255.0;
+    float4 enc = kEncodeMul * v;
+    enc = frac(enc);
+    enc -= enc.yzww * kEncodeBit;
+    return enc;
+}
+inline float DecodeFloatRGBA(float4 enc) { return dot(enc, float4(1.0, 1 / 255.0, 1 / 65025.0, 1 / 16581375.0)); }
+inline float2 EncodeFloatRG(float v)
+{
+    float2 enc = frac(float2(1.0, 255.0) * v);
+    enc.x -= enc.y * (1.0 / 255.0);
+    return enc;
+}
+inline float DecodeFloatRG(float2 enc) { return dot(enc, float2(1.0, 1 / 255.0)); }
+
+// ---- shadow casters ---------------------------------------------------------------------------
+// Point-light shadows (SHADOWS_CUBE) store the distance to the light over
+// its range; facet's shadow targets are float, so the value is stored as is.
+float4 UnityEncodeCubeShadowDepth(float z) { return float4(z, z, z, z); }
+float UnityDecodeCubeShadowDepth(float4 vals) { return vals.r; }
+
+// Clip position of an object-space vertex pushed back along the world
+// normal by unity_LightShadowBias.z (normal offset), for lights other than
+// directional facing it head-on less.
+float4 UnityClipSpaceShadowCasterPos(float4 vertex, float3 normal)
+{
+    float4 wPos = mul(unity_ObjectToWorld, vertex);
+    if (unity_LightShadowBias.z != 0.0) {
+        float3 wNormal = UnityObjectToWorldNormal(normal);
+        float3 wLight = normalize(UnityWorldSpaceLightDir(wPos.xyz));
+        float shadowCos = dot(wNormal, wLight);
+        float shadowSine = sqrt(1.0 - shadowCos * shadowCos);
+        float normalBias = unity_LightShadowBias.z * shadowSine;
+        wPos.xyz -= wNormal * normalBias;
+    }
+    return mul(UNITY_MATRIX_VP, wPos);
+}
+float4 UnityClipSpaceShadowCasterPos(float3 vertex, float3 normal)
+{
+    return UnityClipSpaceShadowCasterPos(float4(vertex, 1.0), normal);
+}
+// Constant depth bias: the depth (0 near .. 1 far, not reversed) moves away
+// from the light by unity_LightShadowBias.x (clamped to 0..1); with .y = 1,
+// casters in front of the near plane are flattened onto it so that they
+// still cast.
+float4 UnityApplyLinearShadowBias(float4 clipPos)
+{
+    clipPos.z += saturate(unity_LightShadowBias.x) * clipPos.w;
+    float clamped = max(clipPos.z, UNITY_NEAR_CLIP_VALUE * clipPos.w);
+    clipPos.z = lerp(clipPos.z, clamped, unity_LightShadowBias.y);
+    return clipPos;
+}
+
+#if defined(SHADOWS_CUBE) && !defined(SHADOWS_CUBE_IN_DEPTH_TEX)
+// Point light: distance to the light, per pixel.
+#define V2F_SHADOW_CASTER_NOPOS float3 vec : TEXCOORD0;
+#define TRANSFER_SHADOW_CASTER_NOPOS_LEGACY(o, opos) \
+    o.vec = mul(unity_ObjectToWorld, v.vertex).xyz - _LightPositionRange.xyz; opos = UnityObjectToClipPos(v.vertex);
+#define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
+    o.vec = mul(unity_ObjectToWorld, v.vertex).xyz - _LightPositionRange.xyz; opos = UnityObjectToClipPos(v.vertex);
+#define SHADOW_CASTER_FRAGMENT(i) \
+    return UnityEncodeCubeShadowDepth((length(i.vec) + unity_LightShadowBias.x) * _LightPositionRange.w);
+#else
+// Directional and spot lights: depth only.
+#define V2F_SHADOW_CASTER_NOPOS
+#define TRANSFER_SHADOW_CASTER_NOPOS_LEGACY(o, opos) \
+    opos = UnityObjectToClipPos(v.vertex.xyz); opos = UnityApplyLinearShadowBias(opos);
+#define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
+    opos = UnityClipSpaceShadowCasterPos(v.vertex, v.normal); opos = UnityApplyLinearShadowBias(opos);
+#define SHADOW_CASTER_FRAGMENT(i) return 0;
+#endif
+// The caster's v2f members and the vertex/fragment bodies; the vertex input
+// must be called v and have vertex (and normal for the _NORMALOFFSET form).
+#define V2F_SHADOW_CASTER V2F_SHADOW_CASTER_NOPOS UNITY_POSITION(pos)
+#define V2F_SHADOW_CASTER_NOPOS_NOFALLBACK V2F_SHADOW_CASTER_NOPOS
+#define TRANSFER_SHADOW_CASTER(o) TRANSFER_SHADOW_CASTER_NOPOS_LEGACY(o, o.pos)
+#define TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
+
+// ---- legacy helpers -------------------------------------------------------------------------
+// Object-space tangent frame `rotation` (rows tangent, binormal, normal)
+// from appdata `v`, as old vertex programs use it.
+#define TANGENT_SPACE_ROTATION \
+    float3 binormal = cross(normalize(v.normal), normalize(v.tangent.xyz)) * v.tangent.w; \
+    float3x3 rotation = float3x3(v.tangent.xyz, binormal, v.normal)
+
 // ---- image effects ----------------------------------------------------------------------------
 v2f_img vert_img(appdata_img v)
 {

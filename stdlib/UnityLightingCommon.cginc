@@ -5,6 +5,14 @@
 
 #include "UnityShaderVariables.cginc"
 
+// Lighting functions add indirect (ambient, reflection) light only where it
+// belongs: once per object, in ForwardBase (and the deferred base pass), not
+// once per extra light in ForwardAdd. The pass defines UNITY_PASS_* before
+// its includes (the surface-shader lowering does it for generated passes).
+#if (defined(UNITY_PASS_FORWARDBASE) || defined(UNITY_PASS_DEFERRED)) && !defined(UNITY_LIGHT_FUNCTION_APPLY_INDIRECT)
+#define UNITY_LIGHT_FUNCTION_APPLY_INDIRECT
+#endif
+
 // The colour * intensity of the pass's light (FacetPerLight, set 1). A shader
 // that declares its own `float4 _LightColor0;` without this file gets a loose
 // uniform instead, which the runtime fills by name.

@@ -93,6 +93,13 @@ class Backend {
                                 SourceMap& sources, Diagnostics& diags) const;
 };
 
+// Compiles a self-contained HLSL compute shader (DX9 compatibility, as for
+// programs; #include resolved through `options`, the stdlib searched last) to
+// legalised, optimised and validated SPIR-V. Not tied to a .shader file:
+// diagnostics name the line of `source` (as "<compute>:N") or of the include.
+Result<std::vector<uint32_t>> compile_hlsl_compute(const std::string& source, const std::string& entry,
+                                                   const BackendOptions& options, Diagnostics& diags);
+
 // The stdlib folder used when BackendOptions::stdlib_dir is empty: $FACET_STDLIB_DIR,
 // else the source tree's stdlib/ (a build tree), else the installed one.
 std::string default_stdlib_dir();

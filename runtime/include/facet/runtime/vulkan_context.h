@@ -1,0 +1,112 @@
+// A headless Vulkan 1.2 context: instance (no window system), one physical
+// device chosen by a selector, a device with one compute-capable queue, a
+// command pool and a timestamp query pool. Validation layers on request, with
+// a debug-utils messenger that records every warning and error so that tests
+// can assert there were none.
+//
+//   auto context = runtime::create_context({.validation = true});   // lavapipe
+//   if (!context) { fmt::print("{}\n", runtime::describe(context.error())); return 1; }
+//   ...
+//   assert((*context)->messages().empty());
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/runtime/vk_error.h"
+
+namespace facet::runtime {
+
+// One physical device as the loader reports it.
+struct DeviceInfo {
+  uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
+  std::string name;
+  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+  uint32_t api_version = 0;
+  float timestamp_period_ns = 0;    // nanoseconds per timestamp tick
+  bool has_compute_queue = false;
+  uint32_t timestamp_valid_bits = 0;  // of the first compute queue family; 0: no timestamps
+};
+
+// "cpu", "discrete-gpu", ...
+std::string_view device_type_name(VkPhysicalDeviceType type);
+// "0: llvmpipe (LLVM 15.0.6, 256 bits) [cpu, Vulkan 1.3.230, timestamps 1 ns]"
+std::string describe(const DeviceInfo& device);
+
+// Which device a selector picks, as a pure function of the device list:
+// ""            the first CPU device with a compute queue (lavapipe)
+// "3"           the device at index 3
+// "NVIDIA"      the first device whose name contains it (case-insensitive)
+// The error lists every device and why it was rejected.
+VkResultOf<uint32_t> select_device(const std::vector<DeviceInfo>& devices, const std::string& selector);
+
+// The devices of this machine (through a short-lived instance, no layers).
+VkResultOf<std::vector<DeviceInfo>> list_devices();
+
+struct ContextOptions {
+  std::string device;       // a selector for select_device
+  bool validation = false;  // VK_LAYER_KHRONOS_validation + message recording
+};
+
+// What the validation messenger recorded (severity warning or error).
+struct ValidationMessage {
+  VkDebugUtilsMessageSeverityFlagBitsEXT severity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  std::string id_name;  // the VUID or message name
+  std::string text;
+};
+
+// Owns every handle it holds and destroys them in reverse order. Not movable:
+// the messenger keeps a pointer to it (create_context returns it on the heap).
+class Context {
+ public:
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physical_device() const { return physical_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queue_family() const { return queue_family_; }
+  VkCommandPool command_pool() const { return command_pool_; }
+  VkQueryPool timestamp_pool() const { return timestamp_pool_; }  // 2 queries; null without timestamps
+  const DeviceInfo& device_info() const { return info_; }
+  bool validation() const { return validation_; }
+
+  // Every message of severity >= warning since creation (or the last clear).
+  const std::vector<ValidationMessage>& messages() const { return messages_; }
+  void clear_messages() { messages_.clear(); }
+  // All messages, one per line, for test failure output.
+  std::string messages_text() const;
+
+ private:
+  Context() = default;
+  friend VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& options);
+  friend struct ContextBuilder;
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT types,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  VkCommandPool command_pool_ = VK_NULL_HANDLE;
+  VkQueryPool timestamp_pool_ = VK_NULL_HANDLE;
+  DeviceInfo info_;
+  bool validation_ = false;
+  std::vector<ValidationMessage> messages_;
+};
+
+// Creates the instance, picks the device and creates the device objects.
+// Errors: loader_missing, layer_missing, extension_missing, instance_failed,
+// no_device (with the reasons), device_failed, object_failed.
+VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& options);
+
+}  // namespace facet::runtime

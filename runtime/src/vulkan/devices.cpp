@@ -1,0 +1,146 @@
+// Device description and choice: pure functions over DeviceInfo, plus the
+// queries that fill it.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+#include "facet/runtime/vulkan_context.h"
+#include "vulkan/device_query.h"
+
+namespace facet::runtime {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return out;
+}
+
+std::optional<uint32_t> parse_index(const std::string& selector) {
+  uint32_t value = 0;
+  auto [end, ec] = std::from_chars(selector.data(), selector.data() + selector.size(), value);
+  if (ec != std::errc() || end != selector.data() + selector.size()) return std::nullopt;
+  return value;
+}
+
+// Why `device` cannot run the runtime at all; empty when it can.
+std::string unusable_reason(const DeviceInfo& device) {
+  if (!device.has_compute_queue) return "no compute queue";
+  if (device.api_version < kApiVersion) {
+    return fmt::format("Vulkan {}.{} < 1.2", VK_API_VERSION_MAJOR(device.api_version),
+                       VK_API_VERSION_MINOR(device.api_version));
+  }
+  return {};
+}
+
+std::vector<VkQueueFamilyProperties> queue_families(VkPhysicalDevice device) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  families.resize(count);
+  return families;
+}
+
+std::string rejection(const DeviceInfo& device, const std::string& why) {
+  return fmt::format("{}: rejected, {}", describe(device), why);
+}
+
+}  // namespace
+
+std::string_view device_type_name(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_OTHER: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "unknown";
+  }
+}
+
+std::string describe(const DeviceInfo& device) {
+  std::string timestamps = device.timestamp_valid_bits
+                               ? fmt::format("timestamps {} ns", device.timestamp_period_ns)
+                               : std::string("no timestamps");
+  return fmt::format("{}: {} [{}, Vulkan {}.{}.{}, {}]", device.index, device.name, device_type_name(device.type),
+                     VK_API_VERSION_MAJOR(device.api_version), VK_API_VERSION_MINOR(device.api_version),
+                     VK_API_VERSION_PATCH(device.api_version), timestamps);
+}
+
+VkResultOf<uint32_t> select_device(const std::vector<DeviceInfo>& devices, const std::string& selector) {
+  std::optional<uint32_t> index = parse_index(selector);
+  std::string wanted = lower(selector);
+  std::vector<std::string> reasons;
+  for (const DeviceInfo& device : devices) {
+    std::string why;
+    if (selector.empty() && device.type != VK_PHYSICAL_DEVICE_TYPE_CPU) {
+      why = "not a CPU device (the default is lavapipe)";
+    } else if (index && device.index != *index) {
+      why = fmt::format("index is not {}", *index);
+    } else if (!index && !selector.empty() && lower(device.name).find(wanted) == std::string::npos) {
+      why = fmt::format("name does not contain '{}'", selector);
+    } else {
+      why = unusable_reason(device);
+    }
+    if (why.empty()) return device.index;
+    reasons.push_back(rejection(device, why));
+  }
+  if (devices.empty()) reasons.push_back("the Vulkan loader reports no physical device");
+  std::string what = selector.empty() ? std::string("no CPU Vulkan device (lavapipe: install mesa-vulkan-drivers)")
+                                      : fmt::format("no Vulkan device matches '{}'", selector);
+  return vk_failure(VkErrorCode::no_device, what, VK_SUCCESS, std::move(reasons));
+}
+
+std::optional<uint32_t> compute_queue_family(VkPhysicalDevice device) {
+  std::vector<VkQueueFamilyProperties> families = queue_families(device);
+  for (uint32_t i = 0; i < families.size(); ++i) {
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) return i;
+  }
+  return std::nullopt;
+}
+
+DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(device, &properties);
+  DeviceInfo info;
+  info.index = index;
+  info.name = properties.deviceName;
+  info.type = properties.deviceType;
+  info.api_version = properties.apiVersion;
+  info.timestamp_period_ns = properties.limits.timestampPeriod;
+  if (std::optional<uint32_t> family = compute_queue_family(device)) {
+    info.has_compute_queue = true;
+    info.timestamp_valid_bits = queue_families(device)[*family].timestampValidBits;
+  }
+  return info;
+}
+
+VkResultOf<std::vector<VkPhysicalDevice>> physical_devices(VkInstance instance) {
+  uint32_t count = 0;
+  VkResult result = vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  if (result == VK_SUCCESS && count) result = vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  if (result != VK_SUCCESS && result != VK_INCOMPLETE) {
+    return vk_failure(VkErrorCode::device_failed, "cannot enumerate physical devices", result);
+  }
+  devices.resize(count);
+  return devices;
+}
+
+VkResultOf<std::vector<DeviceInfo>> list_devices() {
+  VkResultOf<VkInstance> instance = create_instance(false, nullptr);
+  if (!instance) return unexpected(instance.error());
+  VkResultOf<std::vector<VkPhysicalDevice>> handles = physical_devices(*instance);
+  std::vector<DeviceInfo> devices;
+  if (handles) {
+    for (uint32_t i = 0; i < handles->size(); ++i) devices.push_back(query_device((*handles)[i], i));
+  }
+  vkDestroyInstance(*instance, nullptr);
+  if (!handles) return unexpected(handles.error());
+  return devices;
+}
+
+}  // namespace facet::runtime

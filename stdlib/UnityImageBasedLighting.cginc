@@ -1,0 +1,36 @@
+// Reflection-probe sampling: the glossy-environment query of the Standard
+// path, over FacetGI.hlsl.
+#ifndef UNITY_IMAGE_BASED_LIGHTING_INCLUDED
+#define UNITY_IMAGE_BASED_LIGHTING_INCLUDED
+
+#include "UnityCG.cginc"
+#include "UnityStandardConfig.cginc"
+#include "UnityStandardBRDF.cginc"
+#include "FacetGI.hlsl"
+
+struct Unity_GlossyEnvironmentData
+{
+    half roughness;  // perceptual roughness (1 - smoothness), not its square
+    half3 reflUVW;   // the lookup direction, world space
+};
+
+Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(half Smoothness, half3 worldViewDir, half3 Normal, half3 fresnel0)
+{
+    Unity_GlossyEnvironmentData g;
+    g.roughness = SmoothnessToPerceptualRoughness(Smoothness);
+    g.reflUVW = reflect(-worldViewDir, Normal);
+    return g;
+}
+
+half perceptualRoughnessToMipmapLevel(half perceptualRoughness) { return FacetPerceptualRoughnessToMip(perceptualRoughness); }
+
+// facet has one probe texture: the cube argument names it for source
+// compatibility (UNITY_PASS_TEXCUBE(unity_SpecCube0)) and is sampled.
+half3 Unity_GlossyEnvironment(samplerCUBE tex, half4 hdr, Unity_GlossyEnvironmentData glossIn)
+{
+    half mip = perceptualRoughnessToMipmapLevel(glossIn.roughness);
+    half4 rgbm = texCUBElod(tex, float4(glossIn.reflUVW, mip));
+    return DecodeHDR(rgbm, hdr);
+}
+
+#endif // UNITY_IMAGE_BASED_LIGHTING_INCLUDED
