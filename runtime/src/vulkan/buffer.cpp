@@ -57,12 +57,19 @@ void Buffer::reset() {
 
 VkResultOf<Buffer> create_storage_buffer(const Context& context, VkDeviceSize size) {
   if (size == 0) return vk_failure(VkErrorCode::invalid_argument, "a storage buffer needs a size above 0");
+  return create_buffer(context, size,
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                           VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+}
+
+VkResultOf<Buffer> create_buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage) {
+  if (size == 0) return vk_failure(VkErrorCode::invalid_argument, "a buffer needs a size above 0");
   Buffer buffer;
   buffer.device_ = context.device();
   buffer.size_ = size;
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
-  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   if (VkResult result = vkCreateBuffer(buffer.device_, &info, nullptr, &buffer.buffer_); result != VK_SUCCESS) {
     return vk_failure(VkErrorCode::object_failed, fmt::format("cannot create a {}-byte buffer", size), result);

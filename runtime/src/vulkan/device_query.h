@@ -19,7 +19,8 @@ inline constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 // itself is reported. The caller destroys the instance.
 VkResultOf<VkInstance> create_instance(bool validation, const VkDebugUtilsMessengerCreateInfoEXT* messenger);
 
-// The first queue family with compute, if any.
+// The first queue family with graphics and compute, else the first with
+// compute, if any.
 std::optional<uint32_t> compute_queue_family(VkPhysicalDevice device);
 
 DeviceInfo query_device(VkPhysicalDevice device, uint32_t index);

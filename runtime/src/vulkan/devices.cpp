@@ -95,7 +95,13 @@ VkResultOf<uint32_t> select_device(const std::vector<DeviceInfo>& devices, const
 }
 
 std::optional<uint32_t> compute_queue_family(VkPhysicalDevice device) {
+  // A family with graphics too, where there is one, so that the renderer
+  // draws on the same queue the evaluator dispatches on.
   std::vector<VkQueueFamilyProperties> families = queue_families(device);
+  constexpr VkQueueFlags kBoth = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT;
+  for (uint32_t i = 0; i < families.size(); ++i) {
+    if ((families[i].queueFlags & kBoth) == kBoth) return i;
+  }
   for (uint32_t i = 0; i < families.size(); ++i) {
     if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) return i;
   }

@@ -28,7 +28,7 @@ class Buffer {
   void* data() const { return mapped_; }
 
  private:
-  friend VkResultOf<Buffer> create_storage_buffer(const Context& context, VkDeviceSize size);
+  friend VkResultOf<Buffer> create_buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage);
   void reset();
 
   VkDevice device_ = VK_NULL_HANDLE;
@@ -40,5 +40,8 @@ class Buffer {
 
 // A storage buffer of `size` bytes (> 0), mapped, contents undefined.
 VkResultOf<Buffer> create_storage_buffer(const Context& context, VkDeviceSize size);
+// The same for any usage (vertex, index, uniform, transfer): the renderer's
+// buffers are small enough that host-visible memory costs nothing on lavapipe.
+VkResultOf<Buffer> create_buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage);
 
 }  // namespace facet::runtime

@@ -1,0 +1,79 @@
+// The forward renderer: Unity's forward-rendering semantics over a Scene
+// (docs/rendering.md). Shaders are loaded and each variant a draw needs is
+// compiled on first use through facet::Compiler; nothing else is compiled.
+//
+//   auto scene = runtime::load_scene("examples/scenes/unlit.json");
+//   auto frame = runtime::render_scene(*context, *scene, {});
+//   runtime::write_png(*frame, "out.png");
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/result.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+
+class Context;
+
+struct RenderOptions {
+  int width = 0, height = 0;  // 0: the scene's size
+  std::string cache_dir;      // the compiler's cache folder; empty: none
+};
+
+// One draw (or one pass that was not drawn), for --explain and tests.
+struct DrawRecord {
+  std::string object;           // "objects[1] (ball)"
+  size_t object_index = 0;
+  std::string shader;           // the shader's name
+  std::string pass;             // "1 FORWARD_DELTA"
+  std::string light_mode;       // the pass's LightMode tag ("" when none)
+  std::string light;            // "lights[2] (point)" or "" when the pass has no light
+  int queue = 2000;
+  std::vector<std::string> keywords;  // of the variant drawn
+  bool exact = true;            // false: Unity's closest-match rule picked the variant
+  bool additive = false;        // a ForwardAdd draw
+  bool drawn = true;            // false: the pass was skipped (the reason is in `why`)
+  std::string state;            // fixed-function state
+  std::string why;
+};
+
+struct RenderStats {
+  uint64_t draws = 0;
+  uint64_t additive_draws = 0;
+  uint64_t triangles = 0;
+  uint64_t pipelines = 0;          // graphics pipelines created
+  uint64_t variants_compiled = 0;  // (pass, variant) pairs compiled
+  uint64_t shaders_loaded = 0;
+  uint64_t textures_loaded = 0;    // from files
+  std::optional<double> gpu_ms;    // the frame's GPU time from timestamps
+  double compile_ms = 0;           // loading and compiling shaders
+  double total_ms = 0;
+};
+
+struct RenderedFrame {
+  int width = 0, height = 0;
+  std::vector<float> hdr;        // RGBA, linear, exposure applied, row 0 at the top
+  std::vector<uint8_t> ldr;      // RGBA8: tone-mapped, sRGB-encoded, alpha 255
+  std::vector<DrawRecord> draws; // in submission order; skipped passes after them
+  std::vector<std::string> compiled;  // "Examples/PhongMultiLight FORWARD_DELTA: POINT", in compile order
+  RenderStats stats;
+};
+
+struct RenderError {
+  std::string message;
+};
+
+Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options);
+
+// Writes through a temporary file and a rename: no partial file on failure.
+Result<void, RenderError> write_png(const RenderedFrame& frame, const std::string& path);
+Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::string& path);
+
+// One line per draw, as `facet render --explain` prints them.
+std::string explain_text(const RenderedFrame& frame);
+
+}  // namespace facet::runtime

@@ -1,0 +1,124 @@
+// Scenes as plain data, read from the JSON format of docs/scene-format.md.
+// Reading checks the JSON's shape (types, counts, enum words, ranges) and
+// names the JSON path of anything wrong; what depends on the shaders
+// (property names and types) is checked when the renderer binds materials,
+// with the same kind of path.
+//
+//   auto scene = runtime::load_scene("examples/scenes/unlit.json");
+//   if (!scene) { fprintf(stderr, "%s\n", scene.error().message.c_str()); return 1; }
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/result.h"
+
+namespace facet::runtime {
+
+// "scene.json: objects[2].material.properties._Color: expected 4 numbers",
+// or "scene.json:3:7: <JSON syntax error>".
+struct SceneError {
+  std::string message;
+};
+
+using Vec3 = std::array<float, 3>;
+using Vec4 = std::array<float, 4>;
+
+// Position, Unity Euler angles in degrees (applied Z, then X, then Y) and
+// scale; `look_at` (a world point) replaces the rotation when present.
+struct Transform {
+  Vec3 position{0, 0, 0};
+  Vec3 rotation{0, 0, 0};
+  Vec3 scale{1, 1, 1};
+  std::optional<Vec3> look_at;
+};
+
+enum class Projection { perspective, orthographic };
+
+struct SceneCamera {
+  Projection projection = Projection::perspective;
+  Transform transform;     // looks along its local +Z, as Unity's cameras
+  float fov = 60;          // vertical, degrees
+  float size = 5;          // orthographic half height
+  float near = 0.3f, far = 1000;
+  Vec4 clear_color{0.19f, 0.30f, 0.47f, 1};  // sRGB-authored, as in Unity
+  float exposure = 1;
+};
+
+enum class LightType { directional, point, spot };
+
+struct SceneLight {
+  LightType type = LightType::directional;
+  std::string json_path;    // "lights[1]"
+  Transform transform;      // a directional or spot light shines along its +Z
+  Vec3 color{1, 1, 1};      // sRGB-authored
+  float intensity = 1;
+  float range = 10;         // point and spot
+  float spot_angle = 30;    // full cone, degrees
+  float inner_spot_angle = 21.8f;
+};
+
+enum class FogMode { off, linear, exp, exp2 };
+
+struct SceneFog {
+  FogMode mode = FogMode::off;
+  Vec4 color{0.5f, 0.5f, 0.5f, 1};  // sRGB-authored
+  float start = 0, end = 300, density = 0.01f;
+};
+
+enum class Tonemap { none, reinhard, aces };
+
+// A texture a property names: a built-in ("white", "black", "gray", "bump",
+// "red") or a file (path resolved against the scene's folder).
+struct SceneTexture {
+  std::string name;       // built-in name or resolved path
+  bool builtin = false;
+  bool srgb = true;       // colour data; false for normal maps, masks, data
+  std::array<float, 2> scale{1, 1}, offset{0, 0};
+};
+
+// One entry of material.properties, before the shader says what it must be.
+struct SceneProperty {
+  std::string name;
+  std::string json_path;            // "objects[0].material.properties._Color"
+  std::vector<float> numbers;       // a number or a list of numbers
+  std::optional<SceneTexture> texture;
+};
+
+struct SceneMaterial {
+  std::string shader;               // resolved path of the .shader file
+  std::string json_path;            // "objects[0].material"
+  std::vector<SceneProperty> properties;
+  std::vector<std::string> keywords;
+  std::optional<int> queue;         // render queue override
+};
+
+struct SceneObject {
+  std::string name;
+  std::string json_path;            // "objects[0]"
+  std::string mesh;                 // built-in name or resolved .obj path
+  bool builtin_mesh = true;
+  Transform transform;
+  SceneMaterial material;
+};
+
+struct Scene {
+  std::string path;                 // as given, for messages
+  int width = 256, height = 256;
+  float time = 0;                   // seconds, for _Time
+  SceneCamera camera;
+  std::vector<SceneLight> lights;
+  std::vector<SceneObject> objects;
+  Vec3 ambient{0.2f, 0.2f, 0.2f};   // sRGB-authored flat ambient
+  SceneFog fog;
+  Tonemap tonemap = Tonemap::none;
+  int pixel_light_count = 4;        // Unity's default pixel light limit
+};
+
+// Parses `text`; `path` names the file in messages and anchors relative paths.
+Result<Scene, SceneError> parse_scene(const std::string& text, const std::string& path);
+Result<Scene, SceneError> load_scene(const std::string& path);
+
+}  // namespace facet::runtime

@@ -1,0 +1,200 @@
+// Figures as SVG (written directly) and PNG (OpenImageIO), the display
+// transfer, and whole-or-nothing writes.
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "brdf_internal.h"
+#include "facet/reference/color.h"
+
+namespace facet::brdf {
+namespace {
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t n = uint32_t(uint8_t(bytes[i])) << 16;
+    if (i + 1 < bytes.size()) n |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+    if (i + 2 < bytes.size()) n |= uint32_t(uint8_t(bytes[i + 2]));
+    out += k[(n >> 18) & 63];
+    out += k[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? k[(n >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? k[n & 63] : '=';
+  }
+  return out;
+}
+
+std::vector<float> rgb_of(const std::string& hex) {
+  unsigned r = 0, g = 0, b = 0;
+  std::sscanf(hex.c_str(), "#%02x%02x%02x", &r, &g, &b);
+  return {r / 255.0f, g / 255.0f, b / 255.0f};
+}
+
+void draw_stroke(OIIO::ImageBuf& buf, const Stroke& s) {
+  std::vector<float> c = rgb_of(s.colour);
+  int thickness = s.width >= 2.0 ? 2 : 1;
+  for (size_t i = 1; i < s.points.size(); ++i) {
+    if (s.dashed && (i / 4) % 2 == 1) continue;  // dashed strokes come as many short segments
+    glm::ivec2 a(glm::round(s.points[i - 1])), b(glm::round(s.points[i]));
+    for (int t = 0; t < thickness; ++t) OIIO::ImageBufAlgo::render_line(buf, a.x, a.y + t, b.x, b.y + t, c, i > 1);
+  }
+}
+
+// OIIO's text rendering draws these symbols badly at small sizes.
+std::string ascii(std::string s) {
+  const std::pair<const char*, const char*> k[] = {{"θ", "theta_"}, {"φ", "phi_"}, {"°", " deg"}, {"π", "pi"},
+                                                   {"∫", "int"}, {"–", "-"}, {"·", "*"}};
+  for (auto [from, to] : k) {
+    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + std::strlen(to))) {
+      s.replace(at, std::strlen(from), to);
+    }
+  }
+  return s;
+}
+
+void draw_label(OIIO::ImageBuf& buf, const Label& l) {
+  auto align = l.anchor == "middle" ? OIIO::ImageBufAlgo::TextAlignX::Center
+               : l.anchor == "end"  ? OIIO::ImageBufAlgo::TextAlignX::Right
+                                    : OIIO::ImageBufAlgo::TextAlignX::Left;
+  // No font on the machine: render_text fails and the PNG keeps its curves.
+  OIIO::ImageBufAlgo::render_text(buf, int(l.at.x), int(l.at.y), ascii(l.text), int(l.size), "DejaVuSans", rgb_of(l.colour),
+                                  align);
+  (void)OIIO::geterror();
+  (void)buf.geterror();
+}
+
+}  // namespace
+
+Image8 to_display(const Image& im, double exposure) {
+  Image8 out{im.width, im.height, std::vector<uint8_t>(im.rgb.size())};
+  for (size_t i = 0; i < im.rgb.size(); ++i) {
+    double x = std::clamp(double(im.rgb[i]) * exposure, 0.0, 1.0);
+    out.rgb[i] = uint8_t(std::lround(reference::FacetLinearToSRGB(x) * 255.0));
+  }
+  return out;
+}
+
+Image8 side_by_side(const std::vector<Image8>& panels) {
+  Image8 out;
+  for (const Image8& p : panels) out.width += p.width, out.height = std::max(out.height, p.height);
+  out.rgb.assign(size_t(out.width) * size_t(out.height) * 3, 0);
+  int x0 = 0;
+  for (const Image8& p : panels) {
+    for (int y = 0; y < p.height; ++y) {
+      std::copy_n(p.rgb.begin() + size_t(y) * p.width * 3, size_t(p.width) * 3,
+                  out.rgb.begin() + (size_t(y) * out.width + x0) * 3);
+    }
+    x0 += p.width;
+  }
+  return out;
+}
+
+Result<std::string> encode_png(const Image8& im) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput proxy(bytes);
+  auto out = OIIO::ImageOutput::create("figure.png", &proxy);
+  if (!out) return failure("OpenImageIO has no PNG writer: " + OIIO::geterror());
+  OIIO::ImageSpec spec(im.width, im.height, 3, OIIO::TypeDesc::UINT8);
+  if (!out->open("figure.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, im.rgb.data()) || !out->close()) {
+    return failure("PNG encoding failed: " + out->geterror());
+  }
+  return std::string(bytes.begin(), bytes.end());
+}
+
+std::string series_colour(std::size_t i) {
+  static const char* k[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  return k[i % 8];
+}
+
+Result<std::string> to_svg(const Figure& f) {
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+      "font-family=\"DejaVu Sans, sans-serif\">\n<rect width=\"{0}\" height=\"{1}\" fill=\"{2}\"/>\n",
+      f.width, f.height, f.background);
+  for (const Embedded& e : f.images) {
+    Result<std::string> png = encode_png(e.image);
+    if (!png) return unexpected(png.error());
+    s += fmt::format("<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" href=\"data:image/png;base64,{}\"/>\n",
+                     e.at.x, e.at.y, e.image.width, e.image.height, base64(*png));
+  }
+  for (const Stroke& st : f.strokes) {
+    std::string pts;
+    for (const glm::dvec2& p : st.points) pts += fmt::format("{:.2f},{:.2f} ", p.x, p.y);
+    s += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n", st.colour,
+                     st.width, st.dashed ? " stroke-dasharray=\"6 4\"" : "", pts);
+  }
+  for (const Label& l : f.labels) {
+    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>\n",
+                     l.at.x, l.at.y, l.size, l.colour, l.anchor, xml_escape(l.text));
+  }
+  return s + "</svg>\n";
+}
+
+Result<std::string> to_png(const Figure& f) {
+  OIIO::ImageBuf buf(OIIO::ImageSpec(f.width, f.height, 3, OIIO::TypeDesc::FLOAT));
+  std::vector<float> bg = rgb_of(f.background);
+  OIIO::ImageBufAlgo::fill(buf, bg);
+  for (const Embedded& e : f.images) {
+    for (int y = 0; y < e.image.height; ++y) {
+      for (int x = 0; x < e.image.width; ++x) {
+        const uint8_t* p = &e.image.rgb[(size_t(y) * e.image.width + x) * 3];
+        float c[3] = {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f};
+        buf.setpixel(int(e.at.x) + x, int(e.at.y) + y, c, 3);
+      }
+    }
+  }
+  for (const Stroke& s : f.strokes) draw_stroke(buf, s);
+  for (const Label& l : f.labels) draw_label(buf, l);
+  Image8 im{f.width, f.height, std::vector<uint8_t>(size_t(f.width) * f.height * 3)};
+  buf.get_pixels(OIIO::ROI(0, f.width, 0, f.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, im.rgb.data());
+  return encode_png(im);
+}
+
+Result<void> write_file_whole(const std::string& path, const std::string& bytes) {
+  std::filesystem::path target(path);
+  std::filesystem::path temp = target;
+  temp += fmt::format(".partial-{}", ::getpid());
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return failure(fmt::format("{}: cannot write ({})", path, std::strerror(errno)));
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temp, ignored);
+      return failure(fmt::format("{}: write failed", path));
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    return failure(fmt::format("{}: cannot write ({})", path, ec.message()));
+  }
+  return {};
+}
+
+}  // namespace facet::brdf

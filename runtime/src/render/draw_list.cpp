@@ -1,0 +1,226 @@
+#include "render/draw_list.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "facet/variants.h"
+
+namespace facet::runtime {
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
+}
+
+std::string light_name(const Scene& scene, size_t i) {
+  const char* type = scene.lights[i].type == LightType::directional ? "directional"
+                     : scene.lights[i].type == LightType::point     ? "point"
+                                                                    : "spot";
+  return fmt::format("{} ({})", scene.lights[i].json_path, type);
+}
+
+std::vector<std::string> fog_keywords(const Scene& scene) {
+  switch (scene.fog.mode) {
+    case FogMode::linear: return {"FOG_LINEAR"};
+    case FogMode::exp: return {"FOG_EXP"};
+    case FogMode::exp2: return {"FOG_EXP2"};
+    case FogMode::off: break;
+  }
+  return {};
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string s;
+  for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
+  return s.empty() ? "(none)" : s;
+}
+
+// How a pass takes part in forward rendering.
+enum class Role { once, base, add, skip };
+
+Role role_of(const ir::Pass& pass, std::string& why) {
+  if (pass.kind != ir::PassKind::normal || !pass.program) {
+    why = pass.kind == ir::PassKind::grab_pass ? "GrabPass is not supported yet" : "UsePass is not supported yet";
+    return Role::skip;
+  }
+  std::string mode = pass.tag("LightMode");
+  if (mode.empty() || iequals(mode, "Always") || iequals(mode, "SRPDefaultUnlit")) return Role::once;
+  if (iequals(mode, "ForwardBase")) return Role::base;
+  if (iequals(mode, "ForwardAdd")) return Role::add;
+  why = iequals(mode, "ShadowCaster") ? "LightMode ShadowCaster: shadows are not rendered yet"
+                                      : fmt::format("LightMode {} is not part of forward rendering", mode);
+  return Role::skip;
+}
+
+struct Builder {
+  const Context& context;
+  const Scene& scene;
+  std::vector<ObjectState>& objects;
+  const LightSetup& lights;
+  ShaderLibrary& library;
+  DrawListResult out;
+
+  Result<void, RenderError> add(ObjectState& object, size_t pass_index, const LightValues* light,
+                                const std::vector<std::string>& global, DrawRecord record) {
+    ShaderAsset& asset = *object.shader;
+    const SelectedPass& pass = asset.passes[pass_index];
+    Diagnostics diags;
+    Result<variants::Selection> pick =
+        variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
+    std::string where = fmt::format("{}: {}.material: shader '{}' pass {}", scene.path, object.scene->json_path,
+                                    asset.shader.name, record.pass);
+    if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+    bool compiled = false;
+    Result<CompiledVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
+    if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});
+    if (compiled) {
+      ++out.variants_compiled;
+      out.compiled.push_back(fmt::format("{} {}: {}", asset.shader.name, record.pass, join((*variant)->keywords)));
+    }
+    Result<PipelineState, StateError> state = resolve_state(pass.ir->state, object.material);
+    if (!state) return unexpected(RenderError{fmt::format("{}: {}", where, state.error().message)});
+    Draw draw;
+    draw.object = object.index;
+    draw.pass = pass_index;
+    draw.light = light;
+    draw.variant = *variant;
+    draw.state = *state;
+    record.keywords = (*variant)->keywords;
+    record.exact = pick->exact;
+    record.state = describe(*state);
+    if (!pick->exact) record.why += "; no exact variant, Unity's closest match";
+    if (!pick->unknown_keywords.empty()) record.why += "; ignored (not declared): " + join(pick->unknown_keywords);
+    draw.record = std::move(record);
+    out.draws.push_back(std::move(draw));
+    return {};
+  }
+
+  Result<void, RenderError> object_draws(ObjectState& object) {
+    std::vector<std::string> fog = fog_keywords(scene);
+    std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
+    for (size_t p = 0; p < object.shader->passes.size(); ++p) {
+      const ir::Pass& pass = *object.shader->passes[p].ir;
+      DrawRecord record;
+      record.object = object.scene->name.empty() ? object.scene->json_path
+                                                 : fmt::format("{} ({})", object.scene->json_path, object.scene->name);
+      record.object_index = object.index;
+      record.shader = object.shader->shader.name;
+      record.pass = pass.name.empty() ? std::to_string(object.shader->passes[p].pass)
+                                      : fmt::format("{} {}", object.shader->passes[p].pass, pass.name);
+      record.light_mode = pass.tag("LightMode");
+      record.queue = object.queue;
+      std::string why;
+      Role role = role_of(pass, why);
+      if (role == Role::skip) {
+        record.drawn = false;
+        record.why = why;
+        out.skipped.push_back(record);
+        continue;
+      }
+      if (role == Role::once) {
+        record.why = "no LightMode: drawn once, without a light" + fog_note;
+        FACET_TRY(add(object, p, &lights.none, fog, record));
+        continue;
+      }
+      if (role == Role::base) {
+        std::vector<std::string> global = {"DIRECTIONAL", "LIGHTPROBE_SH"};
+        global.insert(global.end(), fog.begin(), fog.end());
+        const LightValues* light = &lights.none;
+        if (lights.main >= 0) {
+          light = &lights.lights[size_t(lights.main)];
+          record.light = light_name(scene, size_t(lights.main));
+          record.why = "ForwardBase: the brightest directional light, ambient as SH" + fog_note;
+        } else {
+          record.why = "ForwardBase: no directional light (black light), ambient as SH" + fog_note;
+        }
+        FACET_TRY(add(object, p, light, global, record));
+        continue;
+      }
+      std::vector<size_t> extra = additive_lights(scene, lights, object);
+      if (extra.empty()) {
+        record.drawn = false;
+        record.why = "ForwardAdd: no further per-pixel light reaches the object";
+        out.skipped.push_back(record);
+      }
+      for (size_t k = 0; k < extra.size(); ++k) {
+        const LightValues& light = lights.lights[extra[k]];
+        std::vector<std::string> global = {light.keyword};
+        global.insert(global.end(), fog.begin(), fog.end());
+        DrawRecord add_record = record;
+        add_record.additive = true;
+        add_record.light = light_name(scene, extra[k]);
+        add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}, additive", k + 1, extra.size()) + fog_note;
+        FACET_TRY(add(object, p, &light, global, add_record));
+      }
+    }
+    return {};
+  }
+};
+
+}  // namespace
+
+LightSetup setup_lights(const Scene& scene) {
+  LightSetup setup;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    setup.lights.push_back(light_values(scene.lights[i]));
+    if (scene.lights[i].type != LightType::directional) continue;
+    if (setup.main < 0 || setup.lights[i].brightness > setup.lights[size_t(setup.main)].brightness) {
+      setup.main = int(i);
+    }
+  }
+  return setup;
+}
+
+std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
+  struct Candidate {
+    size_t index;
+    bool directional;
+    float importance;
+  };
+  std::vector<Candidate> candidates;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (int(i) == setup.main) continue;
+    const SceneLight& light = scene.lights[i];
+    const LightValues& values = setup.lights[i];
+    if (values.brightness <= 0) continue;
+    if (light.type == LightType::directional) {
+      candidates.push_back({i, true, values.brightness});
+      continue;
+    }
+    float d = glm::length(values.position - object.center);
+    if (d >= light.range + object.radius) continue;  // out of range: Unity culls it for this object
+    float r = d / light.range;
+    candidates.push_back({i, false, values.brightness / (1 + 25 * r * r)});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.directional != b.directional) return a.directional;
+    return a.importance > b.importance;
+  });
+  size_t limit = size_t(std::max(0, scene.pixel_light_count - (setup.main >= 0 ? 1 : 0)));
+  std::vector<size_t> out;
+  for (size_t i = 0; i < candidates.size() && i < limit; ++i) out.push_back(candidates[i].index);
+  return out;
+}
+
+Result<DrawListResult, RenderError> build_draws(const Context& context, const Scene& scene,
+                                                std::vector<ObjectState>& objects, const LightSetup& lights,
+                                                ShaderLibrary& library) {
+  Builder builder{context, scene, objects, lights, library, {}};
+  for (ObjectState& object : objects) FACET_TRY(builder.object_draws(object));
+  // Queues in order; opaque front to back, transparent (queue > 2500) back to
+  // front; an object's passes stay together and in shader order.
+  std::stable_sort(builder.out.draws.begin(), builder.out.draws.end(), [&](const Draw& a, const Draw& b) {
+    const ObjectState& oa = objects[a.object];
+    const ObjectState& ob = objects[b.object];
+    if (oa.queue != ob.queue) return oa.queue < ob.queue;
+    if (a.object == b.object) return false;
+    if (oa.distance != ob.distance) return oa.queue > 2500 ? oa.distance > ob.distance : oa.distance < ob.distance;
+    return a.object < b.object;
+  });
+  return std::move(builder.out);
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,75 @@
+// Unity's forward semantics as a draw list: which passes of which objects
+// are drawn with which light and keywords, in which order, and why.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/runtime/material.h"
+#include "facet/runtime/mesh.h"
+#include "facet/runtime/render_state.h"
+#include "facet/runtime/renderer.h"
+#include "facet/runtime/buffer.h"
+#include "render/frame_values.h"
+#include "render/shaders.h"
+
+namespace facet::runtime {
+
+struct GpuMesh {
+  Buffer vertices, indices;
+  uint32_t index_count = 0;
+  Bounds bounds;
+};
+
+struct ObjectState {
+  size_t index = 0;
+  const SceneObject* scene = nullptr;
+  ShaderAsset* shader = nullptr;
+  Material material;
+  glm::mat4 model{1};
+  UniformValues draw;
+  GpuMesh* mesh = nullptr;
+  glm::vec3 center{0};
+  float radius = 0;
+  float distance = 0;  // from the camera to the bounds' centre
+  bool mirrored = false;
+  int queue = 2000;
+};
+
+struct Draw {
+  size_t object = 0;
+  size_t pass = 0;  // into ShaderAsset::passes
+  const LightValues* light = nullptr;
+  CompiledVariant* variant = nullptr;
+  PipelineState state;
+  DrawRecord record;
+};
+
+struct LightSetup {
+  std::vector<LightValues> lights;  // one per scene light
+  int main = -1;                    // the brightest directional light, or -1
+  LightValues none = no_light();
+};
+
+LightSetup setup_lights(const Scene& scene);
+
+// The lights beyond the main one that light `object` per pixel, most
+// important first, at most pixel_light_count - 1 when there is a main light.
+std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
+
+struct DrawListResult {
+  std::vector<Draw> draws;            // sorted for submission
+  std::vector<DrawRecord> skipped;    // passes not drawn
+  uint64_t variants_compiled = 0;
+  std::vector<std::string> compiled;  // descriptions, compile order
+};
+
+Result<DrawListResult, RenderError> build_draws(const Context& context, const Scene& scene,
+                                                std::vector<ObjectState>& objects, const LightSetup& lights,
+                                                ShaderLibrary& library);
+
+}  // namespace facet::runtime

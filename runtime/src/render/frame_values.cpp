@@ -1,0 +1,165 @@
+#include "render/frame_values.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "facet/runtime/material.h"
+
+namespace facet::runtime {
+namespace {
+
+glm::vec3 v3(const Vec3& a) { return {a[0], a[1], a[2]}; }
+
+void set(UniformValues& u, const std::string& name, const glm::mat4& m) { u.set_matrix(name, glm::value_ptr(m)); }
+void set(UniformValues& u, const std::string& name, const glm::vec4& v) { u.set_vector(name, v.x, v.y, v.z, v.w); }
+
+}  // namespace
+
+glm::mat4 rotation_matrix(const Transform& t) {
+  if (t.look_at) {
+    glm::vec3 forward = v3(*t.look_at) - v3(t.position);
+    if (glm::dot(forward, forward) < 1e-12f) return glm::mat4(1);
+    forward = glm::normalize(forward);
+    glm::vec3 up = std::abs(forward.y) > 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    glm::vec3 right = glm::normalize(glm::cross(up, forward));
+    glm::vec3 true_up = glm::cross(forward, right);
+    glm::mat4 r(1);
+    r[0] = glm::vec4(right, 0);
+    r[1] = glm::vec4(true_up, 0);
+    r[2] = glm::vec4(forward, 0);
+    return r;
+  }
+  glm::vec3 a = glm::radians(v3(t.rotation));
+  glm::mat4 ry = glm::rotate(glm::mat4(1), a.y, {0, 1, 0});
+  glm::mat4 rx = glm::rotate(glm::mat4(1), a.x, {1, 0, 0});
+  glm::mat4 rz = glm::rotate(glm::mat4(1), a.z, {0, 0, 1});
+  return ry * rx * rz;
+}
+
+glm::mat4 transform_matrix(const Transform& t) {
+  return glm::translate(glm::mat4(1), v3(t.position)) * rotation_matrix(t) * glm::scale(glm::mat4(1), v3(t.scale));
+}
+
+CameraMatrices camera_matrices(const SceneCamera& camera, int width, int height) {
+  CameraMatrices m;
+  m.position = v3(camera.transform.position);
+  m.camera_to_world = glm::translate(glm::mat4(1), m.position) * rotation_matrix(camera.transform);
+  m.world_to_camera = glm::inverse(m.camera_to_world);
+  m.view = glm::scale(glm::mat4(1), {1, 1, -1}) * m.world_to_camera;
+  float aspect = float(width) / float(height);
+  if (camera.projection == Projection::perspective) {
+    m.projection = glm::perspectiveRH_ZO(glm::radians(camera.fov), aspect, camera.near, camera.far);
+  } else {
+    m.projection = glm::orthoRH_ZO(-camera.size * aspect, camera.size * aspect, -camera.size, camera.size, camera.near,
+                                   camera.far);
+  }
+  m.projection[1][1] = -m.projection[1][1];  // Vulkan's y points down: row 0 is the top of the image
+  return m;
+}
+
+glm::vec3 linear_color(const Vec3& c) {
+  return {float(srgb_to_linear(c[0])), float(srgb_to_linear(c[1])), float(srgb_to_linear(c[2]))};
+}
+
+UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height) {
+  UniformValues u;
+  const SceneCamera& c = scene.camera;
+  set(u, "unity_MatrixV", cam.view);
+  set(u, "unity_MatrixInvV", glm::inverse(cam.view));
+  set(u, "unity_MatrixP", cam.projection);
+  set(u, "unity_MatrixVP", cam.projection * cam.view);
+  set(u, "unity_CameraProjection", cam.projection);
+  set(u, "unity_CameraInvProjection", glm::inverse(cam.projection));
+  set(u, "unity_WorldToCamera", cam.world_to_camera);
+  set(u, "unity_CameraToWorld", cam.camera_to_world);
+  set(u, "_WorldSpaceCameraPos", glm::vec4(cam.position, 0));
+  set(u, "_ProjectionParams", {1, c.near, c.far, 1 / c.far});
+  float w = float(width), h = float(height);
+  set(u, "_ScreenParams", {w, h, 1 + 1 / w, 1 + 1 / h});
+  float x = 1 - c.far / c.near, y = c.far / c.near;
+  set(u, "_ZBufferParams", {x, y, x / c.far, y / c.far});
+  bool ortho = c.projection == Projection::orthographic;
+  float aspect = w / h;
+  set(u, "unity_OrthoParams", {c.size * aspect, c.size, 0, ortho ? 1.0f : 0.0f});
+  float t = scene.time, dt = 1.0f / 60.0f;
+  set(u, "_Time", {t / 20, t, 2 * t, 3 * t});
+  set(u, "_SinTime", {std::sin(t / 8), std::sin(t / 4), std::sin(t / 2), std::sin(t)});
+  set(u, "_CosTime", {std::cos(t / 8), std::cos(t / 4), std::cos(t / 2), std::cos(t)});
+  set(u, "unity_DeltaTime", {dt, 1 / dt, dt, 1 / dt});
+  const SceneFog& fog = scene.fog;
+  glm::vec3 fog_color = linear_color({fog.color[0], fog.color[1], fog.color[2]});
+  set(u, "unity_FogColor", glm::vec4(fog_color, fog.color[3]));
+  float range = fog.end - fog.start;
+  set(u, "unity_FogParams", {fog.density / std::sqrt(std::log(2.0f)), fog.density / std::log(2.0f), -1 / range,
+                             fog.end / range});
+  // A flat ambient colour is the L0 term alone: ShadeSH9(n) returns it for every n.
+  glm::vec3 ambient = linear_color(scene.ambient);
+  set(u, "unity_AmbientSky", glm::vec4(ambient, 1));
+  set(u, "unity_AmbientEquator", glm::vec4(ambient, 1));
+  set(u, "unity_AmbientGround", glm::vec4(ambient, 1));
+  set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
+  set(u, "unity_SHAr", {0, 0, 0, ambient.r});
+  set(u, "unity_SHAg", {0, 0, 0, ambient.g});
+  set(u, "unity_SHAb", {0, 0, 0, ambient.b});
+  for (const char* zero : {"unity_SHBr", "unity_SHBg", "unity_SHBb", "unity_SHC"}) set(u, zero, glm::vec4(0));
+  set(u, "unity_SpecCube0_HDR", {1, 1, 0, 0});
+  set(u, "unity_SpecCube0_BoxMax", {0, 0, 0, 0});
+  set(u, "unity_SpecCube0_BoxMin", {0, 0, 0, 0});
+  set(u, "unity_SpecCube0_ProbePosition", {0, 0, 0, 0});
+  set(u, "unity_ColorSpaceDielectricSpec", {0.04f, 0.04f, 0.04f, 0.96f});
+  return u;
+}
+
+LightValues light_values(const SceneLight& light) {
+  LightValues l;
+  glm::vec3 color = linear_color(light.color) * light.intensity;
+  l.brightness = light.intensity * glm::dot(linear_color(light.color), glm::vec3(0.2126f, 0.7152f, 0.0722f));
+  glm::mat4 rotation = rotation_matrix(light.transform);
+  l.direction = glm::normalize(glm::vec3(rotation * glm::vec4(0, 0, 1, 0)));
+  l.position = v3(light.transform.position);
+  glm::mat4 light_to_world = glm::translate(glm::mat4(1), l.position) * rotation;
+  UniformValues& u = l.values;
+  set(u, "_FacetLightColor0", glm::vec4(color, 1));
+  set(u, "_LightColor0", glm::vec4(color, 1));
+  set(u, "_LightShadowData", {1, 0, 0, 0});
+  u.set_elements("unity_WorldToShadow", std::vector<float>(64, 0.0f));
+  if (light.type == LightType::directional) {
+    l.keyword = "DIRECTIONAL";
+    set(u, "_WorldSpaceLightPos0", glm::vec4(-l.direction, 0));
+    set(u, "unity_WorldToLight", glm::inverse(rotation));
+    set(u, "_LightPositionRange", {0, 0, 0, 0});
+    return l;
+  }
+  l.keyword = light.type == LightType::point ? "POINT" : "SPOT";
+  set(u, "_WorldSpaceLightPos0", glm::vec4(l.position, 1));
+  glm::mat4 to_light = light.type == LightType::point ? glm::translate(glm::mat4(1), -l.position)
+                                                      : glm::inverse(light_to_world);
+  set(u, "unity_WorldToLight", glm::scale(glm::mat4(1), glm::vec3(1 / light.range)) * to_light);
+  set(u, "_LightPositionRange", glm::vec4(l.position, 1 / light.range));
+  float outer = std::cos(glm::radians(light.spot_angle / 2)), inner = std::cos(glm::radians(light.inner_spot_angle / 2));
+  set(u, "_FacetSpotParams", {outer, 1 / std::max(inner - outer, 1e-4f), 0, 0});
+  return l;
+}
+
+LightValues no_light() {
+  LightValues l;
+  l.keyword = "DIRECTIONAL";
+  set(l.values, "_WorldSpaceLightPos0", {0, 1, 0, 0});
+  set(l.values, "_FacetLightColor0", glm::vec4(0));
+  set(l.values, "_LightColor0", glm::vec4(0));
+  set(l.values, "unity_WorldToLight", glm::mat4(1));
+  set(l.values, "_LightShadowData", {1, 0, 0, 0});
+  return l;
+}
+
+UniformValues draw_uniforms(const glm::mat4& m) {
+  UniformValues u;
+  set(u, "unity_ObjectToWorld", m);
+  set(u, "unity_WorldToObject", glm::inverse(m));
+  set(u, "unity_LODFade", {1, 1, 0, 0});
+  set(u, "unity_WorldTransformParams", {0, 0, 0, glm::determinant(glm::mat3(m)) < 0 ? -1.0f : 1.0f});
+  return u;
+}
+
+}  // namespace facet::runtime

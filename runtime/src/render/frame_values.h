@@ -1,0 +1,47 @@
+// The built-in uniform values of docs/stdlib.md, computed from the scene:
+// per frame (camera, time, fog, ambient SH), per light and per draw.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+#include "facet/runtime/scene.h"
+#include "facet/runtime/uniforms.h"
+
+namespace facet::runtime {
+
+// Unity's Transform: T * Ry * Rx * Rz * S (Euler angles in degrees), or a
+// rotation that looks at `look_at` with +Y up.
+glm::mat4 rotation_matrix(const Transform& t);
+glm::mat4 transform_matrix(const Transform& t);
+
+struct CameraMatrices {
+  glm::mat4 camera_to_world{1}, world_to_camera{1};  // left-handed, +Z forward
+  glm::mat4 view{1};        // right-handed, looks down -Z (UNITY_MATRIX_V)
+  glm::mat4 projection{1};  // Vulkan clip space: y down, depth 0..1
+  glm::vec3 position{0};
+};
+
+CameraMatrices camera_matrices(const SceneCamera& camera, int width, int height);
+
+glm::vec3 linear_color(const Vec3& srgb);
+
+UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& camera, int width, int height);
+
+struct LightValues {
+  UniformValues values;
+  std::string keyword;       // DIRECTIONAL, POINT or SPOT
+  float brightness = 0;      // intensity x luminance of the linear colour
+  glm::vec3 position{0};     // point and spot
+  glm::vec3 direction{0, 0, 1};  // the way a directional or spot light shines
+};
+
+LightValues light_values(const SceneLight& light);
+// The light of a ForwardBase pass when the scene has no directional light,
+// and of passes without LightMode: black, pointing up.
+LightValues no_light();
+
+UniformValues draw_uniforms(const glm::mat4& object_to_world);
+
+}  // namespace facet::runtime

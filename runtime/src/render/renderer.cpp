@@ -1,0 +1,486 @@
+// render_scene: load what the scene names, build the draw list, record one
+// command buffer (render pass into RGBA16F + depth, a readback copy,
+// timestamps around the pass), submit, then tone map on the host.
+#include "facet/runtime/renderer.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstring>
+#include <glm/gtc/packing.hpp>
+
+#include "facet/runtime/vulkan_context.h"
+#include "render/draw_list.h"
+#include "render/resources.h"
+
+namespace facet::runtime {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+RenderError error(std::string message) { return RenderError{std::move(message)}; }
+
+// Vulkan objects of one frame, destroyed in reverse order.
+struct FrameObjects {
+  VkDevice device = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  ~FrameObjects() {
+    if (!device) return;
+    vkDeviceWaitIdle(device);
+    if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
+    if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
+    if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
+    if (cache) vkDestroyPipelineCache(device, cache, nullptr);
+  }
+};
+
+// Linear allocation of uniform data in host-visible buffers.
+class UniformArena {
+ public:
+  UniformArena(const Context& context) : context_(context) {
+    VkPhysicalDeviceProperties p{};
+    vkGetPhysicalDeviceProperties(context.physical_device(), &p);
+    align_ = std::max<VkDeviceSize>(16, p.limits.minUniformBufferOffsetAlignment);
+  }
+  struct Slice {
+    VkBuffer buffer;
+    VkDeviceSize offset;
+    std::span<std::byte> bytes;
+  };
+  Result<Slice, RenderError> allocate(VkDeviceSize size) {
+    size = std::max<VkDeviceSize>(size, 16);
+    if (chunks_.empty() || used_ + size > chunks_.back().size()) {
+      VkResultOf<Buffer> b = create_buffer(context_, std::max<VkDeviceSize>(size, 1 << 18), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      if (!b) return unexpected(error(describe(b.error())));
+      chunks_.push_back(std::move(*b));
+      used_ = 0;
+    }
+    Buffer& chunk = chunks_.back();
+    Slice s{chunk.handle(), used_, {static_cast<std::byte*>(chunk.data()) + used_, size_t(size)}};
+    used_ = (used_ + size + align_ - 1) / align_ * align_;
+    return s;
+  }
+
+ private:
+  const Context& context_;
+  std::vector<Buffer> chunks_;
+  VkDeviceSize used_ = 0, align_ = 256;
+};
+
+VkFormat depth_format(const Context& context) {
+  VkFormatProperties p{};
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), VK_FORMAT_D32_SFLOAT_S8_UINT, &p);
+  bool stencil = p.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  return stencil ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
+}
+
+Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth) {
+  VkAttachmentDescription attachments[2]{};
+  attachments[0].format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  attachments[1] = attachments[0];
+  attachments[1].format = depth;
+  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color;
+  subpass.pDepthStencilAttachment = &depth_ref;
+  VkSubpassDependency after{};
+  after.srcSubpass = 0;
+  after.dstSubpass = VK_SUBPASS_EXTERNAL;
+  after.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  after.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  after.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 2;
+  info.pAttachments = attachments;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 1;
+  info.pDependencies = &after;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateRenderPass(device, &info, nullptr, &pass); r != VK_SUCCESS) {
+    return unexpected(error("cannot create the render pass: " + vk_result_name(r)));
+  }
+  return pass;
+}
+
+Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data) {
+  GpuMesh mesh;
+  VkResultOf<Buffer> v = create_buffer(context, data.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  VkResultOf<Buffer> i = create_buffer(context, data.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  if (!v) return unexpected(error(describe(v.error())));
+  if (!i) return unexpected(error(describe(i.error())));
+  std::memcpy(v->data(), data.vertices.data(), data.vertices.size() * sizeof(Vertex));
+  std::memcpy(i->data(), data.indices.data(), data.indices.size() * 4);
+  mesh.vertices = std::move(*v);
+  mesh.indices = std::move(*i);
+  mesh.index_count = uint32_t(data.indices.size());
+  mesh.bounds = mesh_bounds(data);
+  return mesh;
+}
+
+struct Loader {
+  const Context& context;
+  const Scene& scene;
+  ShaderLibrary& library;
+  Resources& resources;
+  std::map<std::string, std::unique_ptr<GpuMesh>> meshes;
+
+  Result<GpuMesh*, RenderError> mesh(const SceneObject& object) {
+    if (auto it = meshes.find(object.mesh); it != meshes.end()) return it->second.get();
+    std::optional<MeshData> data;
+    MeshError mesh_error;
+    data = object.builtin_mesh ? builtin_mesh(object.mesh) : load_obj(object.mesh, mesh_error);
+    if (!data) return unexpected(error(fmt::format("{}: {}.mesh: {}", scene.path, object.json_path, mesh_error.message)));
+    Result<GpuMesh, RenderError> gpu = upload_mesh(context, *data);
+    if (!gpu) return unexpected(gpu.error());
+    auto& slot = meshes[object.mesh];
+    slot = std::make_unique<GpuMesh>(std::move(*gpu));
+    return slot.get();
+  }
+
+  Result<void, RenderError> texel_sizes(Material& material, const SceneObject& object) {
+    for (const auto& [name, ref] : material.textures) {
+      Result<const LoadedTexture*, std::string> t = resources.texture(ref);
+      if (!t) return unexpected(error(fmt::format("{}: {}.material.properties.{}: {}", scene.path, object.json_path, name, t.error())));
+      float w = float((*t)->width), h = float((*t)->height);
+      material.uniforms.set_vector(name + "_TexelSize", 1 / w, 1 / h, w, h);
+    }
+    return {};
+  }
+
+  Result<ObjectState, RenderError> object(size_t index, const CameraMatrices& camera) {
+    const SceneObject& o = scene.objects[index];
+    ObjectState s;
+    s.index = index;
+    s.scene = &o;
+    Result<ShaderAsset*, std::string> shader = library.load(o.material.shader);
+    if (!shader) {
+      return unexpected(error(fmt::format("{}: {}.material.shader: the shader does not compile:\n{}", scene.path,
+                                          o.json_path, shader.error())));
+    }
+    s.shader = *shader;
+    Result<Material, MaterialError> material = make_material(s.shader->shader, o.material, scene.path);
+    if (!material) return unexpected(error(material.error().message));
+    s.material = std::move(*material);
+    FACET_TRY(texel_sizes(s.material, o));
+    s.queue = o.material.queue.value_or(s.shader->queue);
+    Result<GpuMesh*, RenderError> m = mesh(o);
+    if (!m) return unexpected(m.error());
+    s.mesh = *m;
+    s.model = transform_matrix(o.transform);
+    s.draw = draw_uniforms(s.model);
+    s.mirrored = glm::determinant(glm::mat3(s.model)) < 0;
+    const Bounds& b = s.mesh->bounds;
+    s.center = glm::vec3(s.model * glm::vec4(b.center[0], b.center[1], b.center[2], 1));
+    float scale = std::max({std::abs(o.transform.scale[0]), std::abs(o.transform.scale[1]), std::abs(o.transform.scale[2])});
+    s.radius = b.radius * scale;
+    s.distance = glm::length(s.center - camera.position);
+    return s;
+  }
+};
+
+struct Recorder {
+  const Context& context;
+  Resources& resources;
+  UniformArena& arena;
+  VkDescriptorPool pool;
+
+  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object) {
+    if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
+      auto it = object.material.textures.find(r.name);
+      if (it != object.material.textures.end()) {
+        Result<const LoadedTexture*, std::string> t = resources.texture(it->second);
+        if (!t) return unexpected(error(t.error()));
+        return &(*t)->image;
+      }
+    }
+    Result<const Image*, std::string> f = resources.fallback(r.dim.empty() ? "2D" : r.dim, r.arrayed);
+    if (!f) return unexpected(error(fmt::format("resource '{}': {}", r.name, f.error())));
+    return *f;
+  }
+
+  Result<void, RenderError> bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
+                                 const UniformValues& frame) {
+    GpuProgram& program = *draw.variant->program;
+    UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
+    for (uint32_t set = 0; set < kSetCount; ++set) {
+      if (!program.set_used[set]) continue;
+      VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+      allocate.descriptorPool = pool;
+      allocate.descriptorSetCount = 1;
+      allocate.pSetLayouts = &program.set_layouts[set];
+      VkDescriptorSet ds = VK_NULL_HANDLE;
+      if (VkResult r = vkAllocateDescriptorSets(context.device(), &allocate, &ds); r != VK_SUCCESS) {
+        return unexpected(error("cannot allocate a descriptor set: " + vk_result_name(r)));
+      }
+      std::vector<VkDescriptorBufferInfo> buffers;
+      std::vector<std::vector<VkDescriptorImageInfo>> images;
+      std::vector<VkWriteDescriptorSet> writes;
+      buffers.reserve(program.blocks.size());
+      images.reserve(program.resources.size());
+      for (const UniformBlock& block : program.blocks) {
+        if (block.set != set) continue;
+        Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
+        if (!slice) return unexpected(slice.error());
+        fill_block(slice->bytes.subspan(0, block.size), block, layers);
+        buffers.push_back({slice->buffer, slice->offset, std::max<VkDeviceSize>(block.size, 16)});
+        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w.dstSet = ds;
+        w.dstBinding = block.binding;
+        w.descriptorCount = 1;
+        w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        w.pBufferInfo = &buffers.back();
+        writes.push_back(w);
+      }
+      for (const ResourceBinding& r : program.resources) {
+        if (r.set != set) continue;
+        VkDescriptorImageInfo info{};
+        info.sampler = resources.sampler();
+        VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
+        if (r.kind != ResourceKind::separate_sampler) {
+          Result<const Image*, RenderError> image = image_for(r, object);
+          if (!image) return unexpected(image.error());
+          info.imageView = (*image)->view();
+          info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+          type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                                                                : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+        }
+        images.emplace_back(std::max(1u, r.array_size), info);
+        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w.dstSet = ds;
+        w.dstBinding = r.binding;
+        w.descriptorCount = uint32_t(images.back().size());
+        w.descriptorType = type;
+        w.pImageInfo = images.back().data();
+        writes.push_back(w);
+      }
+      vkUpdateDescriptorSets(context.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &ds, 0, nullptr);
+    }
+    if (program.push_constant_bytes) {
+      std::vector<std::byte> zeros(program.push_constant_bytes);
+      vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
+    }
+    return {};
+  }
+};
+
+Result<VkDescriptorPool, RenderError> make_pool(VkDevice device, const std::vector<Draw>& draws) {
+  std::map<VkDescriptorType, uint32_t> counts;
+  uint32_t sets = 0;
+  for (const Draw& d : draws) {
+    const GpuProgram& p = *d.variant->program;
+    for (bool used : p.set_used) sets += used;
+    counts[VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER] += uint32_t(p.blocks.size());
+    for (const ResourceBinding& r : p.resources) {
+      VkDescriptorType t = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                           : r.kind == ResourceKind::separate_image        ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
+                                                                           : VK_DESCRIPTOR_TYPE_SAMPLER;
+      counts[t] += std::max(1u, r.array_size);
+    }
+  }
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (auto [type, n] : counts) {
+    if (n) sizes.push_back({type, n});
+  }
+  if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
+  VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  info.maxSets = std::max(1u, sets);
+  info.poolSizeCount = uint32_t(sizes.size());
+  info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateDescriptorPool(device, &info, nullptr, &pool); r != VK_SUCCESS) {
+    return unexpected(error("cannot create a descriptor pool: " + vk_result_name(r)));
+  }
+  return pool;
+}
+
+glm::vec3 tonemap(glm::vec3 c, Tonemap mode) {
+  c = glm::max(c, glm::vec3(0));
+  if (mode == Tonemap::reinhard) return c / (1.0f + c);
+  if (mode == Tonemap::aces) {  // Narkowicz's fit of the ACES filmic curve
+    return glm::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f);
+  }
+  return glm::min(c, glm::vec3(1));
+}
+
+void finish_image(RenderedFrame& frame, const std::byte* halves, const Scene& scene) {
+  size_t n = size_t(frame.width) * frame.height;
+  frame.hdr.resize(n * 4);
+  frame.ldr.resize(n * 4);
+  float exposure = scene.camera.exposure;
+  for (size_t i = 0; i < n * 4; ++i) {
+    uint16_t h;
+    std::memcpy(&h, halves + 2 * i, 2);
+    frame.hdr[i] = glm::unpackHalf1x16(h) * (i % 4 == 3 ? 1.0f : exposure);
+  }
+  for (size_t p = 0; p < n; ++p) {
+    glm::vec3 c = tonemap({frame.hdr[4 * p], frame.hdr[4 * p + 1], frame.hdr[4 * p + 2]}, scene.tonemap);
+    for (int k = 0; k < 3; ++k) frame.ldr[4 * p + k] = uint8_t(std::lround(linear_to_srgb(c[k]) * 255.0));
+    frame.ldr[4 * p + 3] = 255;
+  }
+}
+
+}  // namespace
+
+Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options) {
+  Clock::time_point start = Clock::now();
+  RenderedFrame frame;
+  frame.width = options.width ? options.width : scene.width;
+  frame.height = options.height ? options.height : scene.height;
+  ShaderLibrary library(options.cache_dir);
+  Resources resources(context);
+  Loader loader{context, scene, library, resources, {}};
+  CameraMatrices camera = camera_matrices(scene.camera, frame.width, frame.height);
+  UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
+  glm::vec3 ambient = linear_color(scene.ambient);
+  if (!resources.environment({ambient.r, ambient.g, ambient.b})) {
+    return unexpected(error("cannot create the environment cube"));
+  }
+  std::vector<ObjectState> objects;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    Result<ObjectState, RenderError> o = loader.object(i, camera);
+    if (!o) return unexpected(o.error());
+    objects.push_back(std::move(*o));
+  }
+  LightSetup lights = setup_lights(scene);
+  Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
+  if (!list) return unexpected(list.error());
+
+  FrameObjects fo;
+  fo.device = context.device();
+  VkFormat depth = depth_format(context);
+  VkResultOf<Image> color = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
+                                                   .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+  if (!color) return unexpected(error(describe(color.error())));
+  VkResultOf<Image> depth_image = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
+                                                         .format = depth,
+                                                         .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT});
+  if (!depth_image) return unexpected(error(describe(depth_image.error())));
+  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth);
+  if (!pass) return unexpected(pass.error());
+  fo.render_pass = *pass;
+  VkImageView views[2] = {color->view(), depth_image->view()};
+  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  fb.renderPass = fo.render_pass;
+  fb.attachmentCount = 2;
+  fb.pAttachments = views;
+  fb.width = uint32_t(frame.width);
+  fb.height = uint32_t(frame.height);
+  fb.layers = 1;
+  if (vkCreateFramebuffer(context.device(), &fb, nullptr, &fo.framebuffer) != VK_SUCCESS) {
+    return unexpected(error("cannot create the framebuffer"));
+  }
+  VkPipelineCacheCreateInfo cache_info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  vkCreatePipelineCache(context.device(), &cache_info, nullptr, &fo.cache);
+  std::vector<VkPipeline> pipelines;
+  for (const Draw& d : list->draws) {
+    bool created = false;
+    Result<VkPipeline, std::string> p = get_pipeline(context, *d.variant->program, d.state, objects[d.object].mirrored,
+                                                     fo.render_pass, fo.cache, &created);
+    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+    pipelines.push_back(*p);
+    frame.stats.pipelines += created;
+  }
+  Result<VkDescriptorPool, RenderError> pool = make_pool(context.device(), list->draws);
+  if (!pool) return unexpected(pool.error());
+  fo.pool = *pool;
+  UniformArena arena(context);
+  Recorder recorder{context, resources, arena, fo.pool};
+  VkDeviceSize bytes = VkDeviceSize(frame.width) * frame.height * 8;
+  VkResultOf<Buffer> readback = create_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (!readback) return unexpected(error(describe(readback.error())));
+  std::optional<RenderError> failed;
+  VkQueryPool queries = context.timestamp_pool();
+  VkResultOf<void> submitted = submit_and_wait(context, [&](VkCommandBuffer commands) {
+    if (queries) {
+      vkCmdResetQueryPool(commands, queries, 0, 2);
+      vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
+    }
+    glm::vec3 clear = linear_color({scene.camera.clear_color[0], scene.camera.clear_color[1], scene.camera.clear_color[2]});
+    VkClearValue clears[2]{};
+    clears[0].color = {{clear.r, clear.g, clear.b, scene.camera.clear_color[3]}};
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = fo.render_pass;
+    begin.framebuffer = fo.framebuffer;
+    begin.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+    begin.clearValueCount = 2;
+    begin.pClearValues = clears;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
+    VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+    vkCmdSetViewport(commands, 0, 1, &viewport);
+    vkCmdSetScissor(commands, 0, 1, &scissor);
+    for (size_t i = 0; i < list->draws.size() && !failed; ++i) {
+      const Draw& d = list->draws[i];
+      const ObjectState& object = objects[d.object];
+      vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[i]);
+      if (Result<void, RenderError> bound = recorder.bind(commands, d, object, frame_values); !bound) {
+        failed = bound.error();
+        break;
+      }
+      VkBuffer vb = object.mesh->vertices.handle();
+      VkDeviceSize offset = 0;
+      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
+      vkCmdBindIndexBuffer(commands, object.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
+      frame.stats.triangles += object.mesh->index_count / 3;
+    }
+    vkCmdEndRenderPass(commands);
+    if (queries) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
+    vkCmdCopyImageToBuffer(commands, color->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->handle(), 1, &region);
+    VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr, 0,
+                         nullptr);
+  });
+  if (failed) return unexpected(*failed);
+  if (!submitted) return unexpected(error(describe(submitted.error())));
+  if (queries) {
+    uint64_t stamps[2] = {0, 0};
+    if (vkGetQueryPoolResults(context.device(), queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
+      frame.stats.gpu_ms = double(stamps[1] - stamps[0]) * context.device_info().timestamp_period_ns / 1e6;
+    }
+  }
+  finish_image(frame, static_cast<const std::byte*>(readback->data()), scene);
+  for (Draw& d : list->draws) {
+    frame.stats.additive_draws += d.record.additive;
+    frame.draws.push_back(std::move(d.record));
+  }
+  frame.stats.draws = list->draws.size();
+  for (DrawRecord& r : list->skipped) frame.draws.push_back(std::move(r));
+  frame.compiled = std::move(list->compiled);
+  frame.stats.variants_compiled = list->variants_compiled;
+  frame.stats.shaders_loaded = library.loaded();
+  frame.stats.textures_loaded = resources.textures_loaded();
+  frame.stats.compile_ms = library.seconds() * 1000;
+  frame.stats.total_ms = ms_since(start);
+  return frame;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,192 @@
+#include "render/resources.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/packing.hpp>
+
+#include "facet/runtime/material.h"
+#include "facet/runtime/vulkan_context.h"
+
+namespace facet::runtime {
+namespace {
+
+// Built-in textures as in Unity: linear values of the texel.
+std::array<float, 4> builtin_rgba(const std::string& name) {
+  if (name == "black") return {0, 0, 0, 0};
+  if (name == "gray" || name == "grey") return {0.5f, 0.5f, 0.5f, 0.5f};
+  if (name == "bump") return {0.5f, 0.5f, 1, 1};  // a flat normal, (0, 0, 1) after UnpackNormal
+  if (name == "red") return {1, 0, 0, 1};
+  return {1, 1, 1, 1};
+}
+
+// Halves a float RGBA image (box filter, odd edges clamped), in linear space.
+std::vector<float> downsample(const std::vector<float>& src, uint32_t w, uint32_t h, uint32_t& out_w, uint32_t& out_h) {
+  out_w = std::max(1u, w / 2);
+  out_h = std::max(1u, h / 2);
+  std::vector<float> dst(size_t(out_w) * out_h * 4);
+  for (uint32_t y = 0; y < out_h; ++y) {
+    for (uint32_t x = 0; x < out_w; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        float sum = 0;
+        for (uint32_t dy = 0; dy < 2; ++dy) {
+          for (uint32_t dx = 0; dx < 2; ++dx) {
+            uint32_t sx = std::min(w - 1, 2 * x + dx), sy = std::min(h - 1, 2 * y + dy);
+            sum += src[(size_t(sy) * w + sx) * 4 + c];
+          }
+        }
+        dst[(size_t(y) * out_w + x) * 4 + c] = sum / 4;
+      }
+    }
+  }
+  return dst;
+}
+
+std::vector<std::byte> encode(const std::vector<float>& linear, VkFormat format) {
+  std::vector<std::byte> out;
+  if (format == VK_FORMAT_R16G16B16A16_SFLOAT) {
+    out.resize(linear.size() * 2);
+    for (size_t i = 0; i < linear.size(); ++i) {
+      uint16_t h = glm::packHalf1x16(linear[i]);
+      std::memcpy(out.data() + 2 * i, &h, 2);
+    }
+    return out;
+  }
+  out.resize(linear.size());
+  for (size_t i = 0; i < linear.size(); ++i) {
+    double v = linear[i];
+    if (format == VK_FORMAT_R8G8B8A8_SRGB && i % 4 != 3) v = linear_to_srgb(std::clamp(v, 0.0, 1.0));
+    out[i] = std::byte(uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)));
+  }
+  return out;
+}
+
+}  // namespace
+
+Resources::~Resources() {
+  if (sampler_) vkDestroySampler(context_.device(), sampler_, nullptr);
+}
+
+VkSampler Resources::sampler() {
+  if (sampler_) return sampler_;
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.maxLod = VK_LOD_CLAMP_NONE;
+  vkCreateSampler(context_.device(), &info, nullptr, &sampler_);
+  return sampler_;
+}
+
+Result<LoadedTexture, std::string> Resources::solid(const std::array<float, 4>& rgba, VkImageViewType view,
+                                                    uint32_t layers, bool srgb) {
+  VkFormat format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkResultOf<Image> image = create_image(context_, {.layers = layers, .format = format,
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                                    .view = view});
+  if (!image) return unexpected(describe(image.error()));
+  std::vector<float> texels;
+  for (uint32_t i = 0; i < layers; ++i) texels.insert(texels.end(), rgba.begin(), rgba.end());
+  std::vector<std::byte> bytes = encode(texels, format);
+  VkResultOf<void> up = upload_image(context_, *image, {std::span<const std::byte>(bytes)});
+  if (!up) return unexpected(describe(up.error()));
+  return LoadedTexture{std::move(*image), 1, 1};
+}
+
+Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref) {
+  auto input = OIIO::ImageInput::open(ref.name);
+  if (!input) return unexpected(fmt::format("{}: cannot read the image ({})", ref.name, OIIO::geterror()));
+  const OIIO::ImageSpec& spec = input->spec();
+  uint32_t w = uint32_t(spec.width), h = uint32_t(spec.height);
+  int channels = spec.nchannels;
+  if (w == 0 || h == 0 || channels < 1) return unexpected(fmt::format("{}: empty image", ref.name));
+  bool hdr = spec.format.is_floating_point();
+  std::vector<float> raw(size_t(w) * h * channels);
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data())) {
+    return unexpected(fmt::format("{}: cannot read the pixels ({})", ref.name, input->geterror()));
+  }
+  // RGBA, rows flipped: uv (0, 0) is the image's bottom-left corner, as in Unity.
+  std::vector<float> linear(size_t(w) * h * 4);
+  bool decode = ref.srgb && !hdr;
+  for (uint32_t y = 0; y < h; ++y) {
+    for (uint32_t x = 0; x < w; ++x) {
+      const float* s = &raw[(size_t(h - 1 - y) * w + x) * channels];
+      float* d = &linear[(size_t(y) * w + x) * 4];
+      float rgba[4] = {s[0], channels > 1 && channels != 2 ? s[1] : s[0], channels > 2 ? s[2] : s[0],
+                       channels == 4 ? s[3] : channels == 2 ? s[1] : 1.0f};
+      for (int c = 0; c < 4; ++c) d[c] = decode && c < 3 ? float(srgb_to_linear(rgba[c])) : rgba[c];
+    }
+  }
+  VkFormat format = hdr ? VK_FORMAT_R16G16B16A16_SFLOAT : ref.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  std::vector<std::vector<std::byte>> mips;
+  uint32_t mw = w, mh = h;
+  std::vector<float> level = linear;
+  while (true) {
+    mips.push_back(encode(level, format));
+    if (mw == 1 && mh == 1) break;
+    uint32_t nw, nh;
+    level = downsample(level, mw, mh, nw, nh);
+    mw = nw;
+    mh = nh;
+  }
+  VkResultOf<Image> image = create_image(context_, {.width = w, .height = h, .mips = uint32_t(mips.size()),
+                                                    .format = format,
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+  if (!image) return unexpected(describe(image.error()));
+  std::vector<std::span<const std::byte>> spans(mips.begin(), mips.end());
+  VkResultOf<void> up = upload_image(context_, *image, spans);
+  if (!up) return unexpected(describe(up.error()));
+  ++files_loaded_;
+  return LoadedTexture{std::move(*image), w, h};
+}
+
+Result<const LoadedTexture*, std::string> Resources::texture(const SceneTexture& ref) {
+  auto key = std::make_pair(ref.name, ref.srgb);
+  if (auto it = textures_.find(key); it != textures_.end()) return it->second.get();
+  Result<LoadedTexture, std::string> made =
+      ref.builtin ? solid(builtin_rgba(ref.name), VK_IMAGE_VIEW_TYPE_2D, 1, false) : load_file(ref);
+  if (!made) return unexpected(made.error());
+  auto& slot = textures_[key];
+  slot = std::make_unique<LoadedTexture>(std::move(*made));
+  return slot.get();
+}
+
+Result<const Image*, std::string> Resources::fallback(std::string_view dim, bool arrayed) {
+  if (dim == "Cube" && !arrayed && environment_) return &environment_->image;
+  std::string key = std::string(dim) + (arrayed ? "[]" : "");
+  if (auto it = fallbacks_.find(key); it != fallbacks_.end()) return &it->second->image;
+  VkImageViewType view = VK_IMAGE_VIEW_TYPE_2D;
+  uint32_t layers = 1;
+  if (dim == "Cube") {
+    view = arrayed ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+    layers = 6;
+  } else if (dim == "3D") {
+    view = VK_IMAGE_VIEW_TYPE_3D;
+  } else if (dim == "1D") {
+    view = arrayed ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
+  } else if (arrayed) {
+    view = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+  }
+  if (view == VK_IMAGE_VIEW_TYPE_1D || view == VK_IMAGE_VIEW_TYPE_1D_ARRAY) {
+    return unexpected(std::string("1D textures are not supported"));
+  }
+  Result<LoadedTexture, std::string> made = solid({1, 1, 1, 1}, view, layers, false);
+  if (!made) return unexpected(made.error());
+  auto& slot = fallbacks_[key];
+  slot = std::make_unique<LoadedTexture>(std::move(*made));
+  return &slot->image;
+}
+
+Result<const Image*, std::string> Resources::environment(const Vec3& c) {
+  if (!environment_) {
+    Result<LoadedTexture, std::string> made = solid({c[0], c[1], c[2], 1}, VK_IMAGE_VIEW_TYPE_CUBE, 6, false);
+    if (!made) return unexpected(made.error());
+    environment_ = std::make_unique<LoadedTexture>(std::move(*made));
+  }
+  return &environment_->image;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,55 @@
+// GPU textures and samplers of a frame: the built-in textures, files read
+// through OpenImageIO (cached by path and colour space), fallback images for
+// every dimension, and the environment cube that stands in for a reflection
+// probe (the flat ambient colour).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "facet/result.h"
+#include "facet/runtime/image.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+
+struct LoadedTexture {
+  Image image;
+  uint32_t width = 1, height = 1;
+};
+
+class Resources {
+ public:
+  explicit Resources(const Context& context) : context_(context) {}
+  ~Resources();
+  Resources(const Resources&) = delete;
+  Resources& operator=(const Resources&) = delete;
+
+  // A 2D texture for a material slot; errors name the file.
+  Result<const LoadedTexture*, std::string> texture(const SceneTexture& ref);
+  // An image for a resource of dimension `dim` ("2D", "Cube", "3D") that
+  // nothing else binds: white, or for "Cube" the environment.
+  Result<const Image*, std::string> fallback(std::string_view dim, bool arrayed);
+  // The environment cube (1 texel per face) of this linear colour.
+  Result<const Image*, std::string> environment(const Vec3& linear_color);
+  VkSampler sampler();  // trilinear, repeat
+
+  size_t textures_loaded() const { return files_loaded_; }
+
+ private:
+  Result<LoadedTexture, std::string> solid(const std::array<float, 4>& rgba, VkImageViewType view, uint32_t layers,
+                                           bool srgb);
+  Result<LoadedTexture, std::string> load_file(const SceneTexture& ref);
+
+  const Context& context_;
+  std::map<std::pair<std::string, bool>, std::unique_ptr<LoadedTexture>> textures_;
+  std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
+  std::unique_ptr<LoadedTexture> environment_;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  size_t files_loaded_ = 0;
+};
+
+}  // namespace facet::runtime

@@ -1,0 +1,100 @@
+#include "render/shaders.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <charconv>
+
+namespace facet::runtime {
+namespace {
+
+struct Timer {
+  double& total;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  ~Timer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+};
+
+}  // namespace
+
+std::optional<int> parse_queue(const std::string& tag) {
+  static const std::pair<const char*, int> names[] = {
+      {"Background", 1000}, {"Geometry", 2000}, {"AlphaTest", 2450}, {"Transparent", 3000}, {"Overlay", 4000}};
+  std::string_view rest = tag;
+  int base = 0;
+  bool named = false;
+  for (auto [name, value] : names) {
+    std::string_view n = name;
+    if (rest.size() >= n.size() && std::equal(n.begin(), n.end(), rest.begin(),
+                                              [](char a, char b) { return std::tolower(a) == std::tolower(b); })) {
+      base = value;
+      rest.remove_prefix(n.size());
+      named = true;
+      break;
+    }
+  }
+  if (named && rest.empty()) return base;
+  int offset = 0;
+  if (!rest.empty() && rest[0] == '+') rest.remove_prefix(1);
+  auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), offset);
+  if (ec != std::errc() || end != rest.data() + rest.size()) return std::nullopt;
+  return base + offset;
+}
+
+Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
+  if (auto it = shaders_.find(path); it != shaders_.end()) return it->second.get();
+  Timer timer{seconds_};
+  auto asset = std::make_unique<ShaderAsset>();
+  asset->path = path;
+  Diagnostics diags;
+  Result<ir::Shader> shader = compiler_.load(path, asset->sources, diags);
+  if (!shader) return unexpected(render_text(diags, asset->sources));
+  asset->shader = std::move(*shader);
+  Result<std::vector<SelectedPass>> passes = compiler_.select_passes(asset->shader, {}, diags);
+  if (!passes) return unexpected(render_text(diags, asset->sources));
+  asset->passes = std::move(*passes);
+  if (!asset->passes.empty()) {
+    const ir::SubShader& sub = asset->shader.subshaders[asset->passes[0].subshader];
+    for (const ir::Tag& tag : sub.tags) {
+      if (tag.key == "Queue") {
+        if (std::optional<int> q = parse_queue(tag.value)) asset->queue = *q;
+      }
+    }
+  }
+  ShaderAsset* raw = asset.get();
+  shaders_[path] = std::move(asset);
+  return raw;
+}
+
+Result<CompiledVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
+                                                             const variants::VariantKey& key, bool* compiled) {
+  auto id = std::make_pair(pass, key);
+  if (auto it = asset.variants.find(id); it != asset.variants.end()) {
+    *compiled = false;
+    return it->second.get();
+  }
+  Timer timer{seconds_};
+  const SelectedPass& selected = asset.passes[pass];
+  CompileOptions options;
+  options.passes = {std::to_string(selected.pass)};
+  options.keywords = variants::all_keywords(selected.keywords, key);
+  options.cache_dir = cache_dir_;
+  Diagnostics diags;
+  Result<CompiledShader> out = compiler_.compile(asset.shader, options, asset.sources, diags);
+  if (!out) return unexpected(render_text(diags, asset.sources));
+  auto variant = std::make_unique<CompiledVariant>();
+  variant->package = std::move(out->package);
+  if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {
+    return unexpected(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected.pass));
+  }
+  const package::PackageVariant& v = variant->package.passes[0].variants[0];
+  variant->keywords = v.keywords;
+  Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, variant->package, v);
+  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected.pass, program.error()));
+  variant->program = std::move(*program);
+  CompiledVariant* raw = variant.get();
+  asset.variants[id] = std::move(variant);
+  *compiled = true;
+  return raw;
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,374 @@
+// The JSON reader of docs/scene-format.md. Every check names the JSON path
+// of the value it rejects; unknown keys are errors so that a misspelt key
+// does not silently keep its default.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "facet/runtime/mesh.h"
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+namespace {
+
+using nlohmann::json;
+
+// Thrown inside this file only, caught by parse_scene: the reader's checks
+// nest deeply and an exception keeps each of them one line.
+struct Bad {
+  std::string path, what;
+};
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string index(const std::string& path, size_t i) { return fmt::format("{}[{}]", path, i); }
+
+const json& member(const json& object, const char* key) { return object.at(key); }
+
+void check_keys(const json& j, const std::string& path, std::initializer_list<const char*> allowed) {
+  if (!j.is_object()) throw Bad{path, "expected an object"};
+  std::set<std::string> keys(allowed.begin(), allowed.end());
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!keys.count(it.key())) {
+      std::string list;
+      for (const char* k : allowed) list += std::string(list.empty() ? "" : ", ") + k;
+      throw Bad{join(path, it.key()), fmt::format("unknown key (expected one of: {})", list)};
+    }
+  }
+}
+
+float number(const json& j, const std::string& path) {
+  if (!j.is_number()) throw Bad{path, "expected a number"};
+  return j.get<float>();
+}
+
+float positive(const json& j, const std::string& path) {
+  float v = number(j, path);
+  if (!(v > 0)) throw Bad{path, "expected a number above 0"};
+  return v;
+}
+
+std::vector<float> numbers(const json& j, const std::string& path, size_t min, size_t max) {
+  std::string want = min == max ? fmt::format("{} numbers", min) : fmt::format("{} to {} numbers", min, max);
+  if (!j.is_array() || j.size() < min || j.size() > max) throw Bad{path, "expected " + want};
+  std::vector<float> out;
+  for (size_t i = 0; i < j.size(); ++i) {
+    if (!j[i].is_number()) throw Bad{path, "expected " + want};
+    out.push_back(j[i].get<float>());
+  }
+  return out;
+}
+
+Vec3 vec3(const json& j, const std::string& path) {
+  std::vector<float> v = numbers(j, path, 3, 3);
+  return {v[0], v[1], v[2]};
+}
+
+// Colours: 3 numbers (alpha 1) or 4.
+Vec4 color(const json& j, const std::string& path) {
+  std::vector<float> v = numbers(j, path, 3, 4);
+  return {v[0], v[1], v[2], v.size() == 4 ? v[3] : 1.0f};
+}
+
+std::string text(const json& j, const std::string& path) {
+  if (!j.is_string()) throw Bad{path, "expected a string"};
+  return j.get<std::string>();
+}
+
+template <typename E>
+E word(const json& j, const std::string& path, std::initializer_list<std::pair<const char*, E>> words) {
+  std::string w = text(j, path);
+  std::string list;
+  for (auto& [name, value] : words) {
+    if (w == name) return value;
+    list += std::string(list.empty() ? "" : ", ") + name;
+  }
+  throw Bad{path, fmt::format("unknown value '{}' (expected one of: {})", w, list)};
+}
+
+int integer(const json& j, const std::string& path, int min, int max) {
+  if (!j.is_number_integer() || j.get<long long>() < min || j.get<long long>() > max) {
+    throw Bad{path, fmt::format("expected an integer from {} to {}", min, max)};
+  }
+  return j.get<int>();
+}
+
+struct Reader {
+  std::filesystem::path dir;
+
+  std::string resolve(const std::string& relative) const {
+    std::filesystem::path p(relative);
+    return (p.is_absolute() ? p : dir / p).lexically_normal().string();
+  }
+
+  Transform transform(const json& j, const std::string& path) const {
+    Transform t;
+    if (j.contains("position")) t.position = vec3(member(j, "position"), join(path, "position"));
+    if (j.contains("rotation")) t.rotation = vec3(member(j, "rotation"), join(path, "rotation"));
+    if (j.contains("look_at")) t.look_at = vec3(member(j, "look_at"), join(path, "look_at"));
+    if (j.contains("scale")) {
+      const json& s = member(j, "scale");
+      if (s.is_number()) {
+        float v = s.get<float>();
+        t.scale = {v, v, v};
+      } else {
+        t.scale = vec3(s, join(path, "scale"));
+      }
+    }
+    return t;
+  }
+
+  SceneCamera camera(const json& j, const std::string& path) const {
+    check_keys(j, path, {"type", "position", "rotation", "look_at", "fov", "size", "near", "far", "clear_color",
+                         "exposure"});
+    SceneCamera c;
+    c.transform = transform(j, path);
+    if (j.contains("type")) {
+      c.projection = word<Projection>(member(j, "type"), join(path, "type"),
+                                      {{"perspective", Projection::perspective}, {"orthographic", Projection::orthographic}});
+    }
+    if (j.contains("fov")) c.fov = positive(member(j, "fov"), join(path, "fov"));
+    if (c.fov >= 180) throw Bad{join(path, "fov"), "expected an angle below 180 degrees"};
+    if (j.contains("size")) c.size = positive(member(j, "size"), join(path, "size"));
+    if (j.contains("near")) c.near = positive(member(j, "near"), join(path, "near"));
+    if (j.contains("far")) c.far = positive(member(j, "far"), join(path, "far"));
+    if (c.far <= c.near) throw Bad{join(path, "far"), "expected far > near"};
+    if (j.contains("clear_color")) c.clear_color = color(member(j, "clear_color"), join(path, "clear_color"));
+    if (j.contains("exposure")) c.exposure = positive(member(j, "exposure"), join(path, "exposure"));
+    return c;
+  }
+
+  SceneLight light(const json& j, const std::string& path) const {
+    check_keys(j, path, {"type", "position", "rotation", "look_at", "color", "intensity", "range", "spot_angle",
+                         "inner_spot_angle"});
+    SceneLight l;
+    l.json_path = path;
+    if (!j.contains("type")) throw Bad{path, "missing key 'type' (directional, point or spot)"};
+    l.type = word<LightType>(member(j, "type"), join(path, "type"),
+                             {{"directional", LightType::directional}, {"point", LightType::point}, {"spot", LightType::spot}});
+    l.transform = transform(j, path);
+    if (l.type == LightType::directional && !j.contains("rotation") && !j.contains("look_at")) {
+      l.transform.rotation = {50, -30, 0};  // Unity's default sun
+    }
+    if (j.contains("color")) {
+      Vec4 c = color(member(j, "color"), join(path, "color"));
+      l.color = {c[0], c[1], c[2]};
+    }
+    if (j.contains("intensity")) {
+      l.intensity = number(member(j, "intensity"), join(path, "intensity"));
+      if (l.intensity < 0) throw Bad{join(path, "intensity"), "expected a number >= 0"};
+    }
+    if (j.contains("range")) l.range = positive(member(j, "range"), join(path, "range"));
+    if (j.contains("spot_angle")) l.spot_angle = positive(member(j, "spot_angle"), join(path, "spot_angle"));
+    if (l.spot_angle >= 180) throw Bad{join(path, "spot_angle"), "expected an angle below 180 degrees"};
+    l.inner_spot_angle = std::min(l.inner_spot_angle, l.spot_angle);
+    if (j.contains("inner_spot_angle")) {
+      l.inner_spot_angle = number(member(j, "inner_spot_angle"), join(path, "inner_spot_angle"));
+      if (l.inner_spot_angle < 0 || l.inner_spot_angle > l.spot_angle) {
+        throw Bad{join(path, "inner_spot_angle"), "expected an angle from 0 to spot_angle"};
+      }
+    }
+    return l;
+  }
+
+  SceneTexture texture(const json& j, const std::string& path) const {
+    SceneTexture t;
+    std::string name;
+    if (j.is_string()) {
+      name = j.get<std::string>();
+    } else {
+      check_keys(j, path, {"texture", "srgb", "scale", "offset"});
+      if (!j.contains("texture")) throw Bad{path, "missing key 'texture'"};
+      name = text(member(j, "texture"), join(path, "texture"));
+      if (j.contains("srgb")) {
+        if (!member(j, "srgb").is_boolean()) throw Bad{join(path, "srgb"), "expected true or false"};
+        t.srgb = member(j, "srgb").get<bool>();
+      }
+      if (j.contains("scale")) {
+        std::vector<float> v = numbers(member(j, "scale"), join(path, "scale"), 2, 2);
+        t.scale = {v[0], v[1]};
+      }
+      if (j.contains("offset")) {
+        std::vector<float> v = numbers(member(j, "offset"), join(path, "offset"), 2, 2);
+        t.offset = {v[0], v[1]};
+      }
+    }
+    static const std::set<std::string> builtins = {"white", "black", "gray", "grey", "bump", "red"};
+    t.builtin = builtins.count(name) != 0;
+    t.name = t.builtin ? name : resolve(name);
+    if (!t.builtin && !std::filesystem::is_regular_file(t.name)) {
+      throw Bad{j.is_string() ? path : join(path, "texture"), fmt::format("texture file '{}' not found", t.name)};
+    }
+    return t;
+  }
+
+  SceneProperty property(const std::string& name, const json& j, const std::string& path) const {
+    SceneProperty p;
+    p.name = name;
+    p.json_path = path;
+    if (j.is_number()) {
+      p.numbers = {j.get<float>()};
+    } else if (j.is_boolean()) {
+      p.numbers = {j.get<bool>() ? 1.0f : 0.0f};
+    } else if (j.is_array()) {
+      p.numbers = numbers(j, path, 1, 4);
+    } else if (j.is_string() || j.is_object()) {
+      p.texture = texture(j, path);
+    } else {
+      throw Bad{path, "expected a number, a list of numbers, or a texture"};
+    }
+    return p;
+  }
+
+  SceneMaterial material(const json& j, const std::string& path) const {
+    check_keys(j, path, {"shader", "properties", "keywords", "queue"});
+    SceneMaterial m;
+    m.json_path = path;
+    if (!j.contains("shader")) throw Bad{path, "missing key 'shader' (a .shader file)"};
+    m.shader = resolve(text(member(j, "shader"), join(path, "shader")));
+    if (!std::filesystem::is_regular_file(m.shader)) {
+      throw Bad{join(path, "shader"), fmt::format("shader file '{}' not found", m.shader)};
+    }
+    if (j.contains("properties")) {
+      const json& props = member(j, "properties");
+      std::string ppath = join(path, "properties");
+      if (!props.is_object()) throw Bad{ppath, "expected an object of property values"};
+      for (auto it = props.begin(); it != props.end(); ++it) {
+        m.properties.push_back(property(it.key(), it.value(), join(ppath, it.key())));
+      }
+    }
+    if (j.contains("keywords")) {
+      const json& k = member(j, "keywords");
+      if (!k.is_array()) throw Bad{join(path, "keywords"), "expected a list of keyword strings"};
+      for (size_t i = 0; i < k.size(); ++i) m.keywords.push_back(text(k[i], index(join(path, "keywords"), i)));
+    }
+    if (j.contains("queue")) m.queue = integer(member(j, "queue"), join(path, "queue"), 0, 5000);
+    return m;
+  }
+
+  SceneObject object(const json& j, const std::string& path) const {
+    check_keys(j, path, {"name", "mesh", "position", "rotation", "look_at", "scale", "material"});
+    SceneObject o;
+    o.json_path = path;
+    if (j.contains("name")) o.name = text(member(j, "name"), join(path, "name"));
+    if (!j.contains("mesh")) throw Bad{path, "missing key 'mesh'"};
+    std::string mesh = text(member(j, "mesh"), join(path, "mesh"));
+    const std::vector<std::string>& names = builtin_mesh_names();
+    o.builtin_mesh = std::find(names.begin(), names.end(), mesh) != names.end();
+    if (o.builtin_mesh) {
+      o.mesh = mesh;
+    } else {
+      o.mesh = resolve(mesh);
+      if (!std::filesystem::is_regular_file(o.mesh)) {
+        throw Bad{join(path, "mesh"), fmt::format("not a built-in mesh (cube, plane, quad, sphere, torus) and no file '{}'",
+                                                  o.mesh)};
+      }
+    }
+    o.transform = transform(j, path);
+    if (!j.contains("material")) throw Bad{path, "missing key 'material'"};
+    o.material = material(member(j, "material"), join(path, "material"));
+    return o;
+  }
+
+  SceneFog fog(const json& j, const std::string& path) const {
+    check_keys(j, path, {"mode", "color", "start", "end", "density"});
+    SceneFog f;
+    f.mode = FogMode::linear;
+    if (j.contains("mode")) {
+      f.mode = word<FogMode>(member(j, "mode"), join(path, "mode"),
+                             {{"off", FogMode::off}, {"linear", FogMode::linear}, {"exp", FogMode::exp}, {"exp2", FogMode::exp2}});
+    }
+    if (j.contains("color")) f.color = color(member(j, "color"), join(path, "color"));
+    if (j.contains("start")) f.start = number(member(j, "start"), join(path, "start"));
+    if (j.contains("end")) f.end = number(member(j, "end"), join(path, "end"));
+    if (f.end <= f.start) throw Bad{join(path, "end"), "expected end > start"};
+    if (j.contains("density")) f.density = number(member(j, "density"), join(path, "density"));
+    return f;
+  }
+
+  Scene scene(const json& j) const {
+    check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
+                       "pixel_light_count"});
+    Scene s;
+    if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
+    if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
+    if (j.contains("time")) s.time = number(member(j, "time"), "time");
+    if (!j.contains("camera")) throw Bad{"camera", "missing (every scene needs a camera)"};
+    s.camera = camera(member(j, "camera"), "camera");
+    if (j.contains("lights")) {
+      const json& lights = member(j, "lights");
+      if (!lights.is_array()) throw Bad{"lights", "expected a list of lights"};
+      for (size_t i = 0; i < lights.size(); ++i) s.lights.push_back(light(lights[i], index("lights", i)));
+    }
+    if (!j.contains("objects")) throw Bad{"objects", "missing (a list of objects)"};
+    const json& objects = member(j, "objects");
+    if (!objects.is_array()) throw Bad{"objects", "expected a list of objects"};
+    for (size_t i = 0; i < objects.size(); ++i) s.objects.push_back(object(objects[i], index("objects", i)));
+    if (j.contains("ambient")) {
+      Vec4 c = color(member(j, "ambient"), "ambient");
+      s.ambient = {c[0], c[1], c[2]};
+    }
+    if (j.contains("fog")) s.fog = fog(member(j, "fog"), "fog");
+    if (j.contains("tonemap")) {
+      s.tonemap = word<Tonemap>(member(j, "tonemap"), "tonemap",
+                                {{"none", Tonemap::none}, {"reinhard", Tonemap::reinhard}, {"aces", Tonemap::aces}});
+    }
+    if (j.contains("pixel_light_count")) s.pixel_light_count = integer(member(j, "pixel_light_count"), "pixel_light_count", 0, 64);
+    return s;
+  }
+};
+
+std::string line_column(const std::string& text, size_t byte) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return fmt::format("{}:{}", line, column);
+}
+
+}  // namespace
+
+Result<Scene, SceneError> parse_scene(const std::string& text, const std::string& path) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann's byte is one past the offending character.
+    std::string what = e.what();
+    if (size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: {}", path, line_column(text, e.byte ? e.byte - 1 : 0), what)});
+  }
+  Reader reader{std::filesystem::path(path).parent_path()};
+  try {
+    Scene scene = reader.scene(j);
+    scene.path = path;
+    return scene;
+  } catch (const Bad& bad) {
+    std::string where = bad.path.empty() ? "" : bad.path + ": ";
+    return unexpected(SceneError{fmt::format("{}: {}{}", path, where, bad.what)});
+  } catch (const json::exception& e) {
+    return unexpected(SceneError{fmt::format("{}: {}", path, e.what())});
+  }
+}
+
+Result<Scene, SceneError> load_scene(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    return unexpected(SceneError{fmt::format("{}: cannot open the scene file (no such file)", path)});
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (!in && !in.eof()) return unexpected(SceneError{fmt::format("{}: cannot read the scene file", path)});
+  return parse_scene(buffer.str(), path);
+}
+
+}  // namespace facet::runtime

@@ -1,0 +1,66 @@
+// Scenes written to a temporary folder for the renderer's tests, and the
+// shared lavapipe context (validation on, zero messages after each test).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "facet/runtime/renderer.h"
+#include "unit/runtime/context_fixture.h"
+
+namespace facet::runtime::test_support {
+
+inline std::string example_shader(const std::string& name) {
+  return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name;
+}
+
+// A folder of this process's own, so that test runs in parallel do not meet.
+inline std::filesystem::path test_dir() {
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("facet_render_tests." + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Removes this process's folder at exit.
+struct TestDirCleanup {
+  ~TestDirCleanup() {
+    std::error_code ec;
+    std::filesystem::remove_all(
+        std::filesystem::temp_directory_path() / ("facet_render_tests." + std::to_string(getpid())), ec);
+  }
+};
+inline TestDirCleanup test_dir_cleanup;
+
+// Writes `json` as <test_dir>/<name>.json and returns the path.
+inline std::string write_scene(const std::string& name, const std::string& json) {
+  std::filesystem::path dir = test_dir();
+  std::filesystem::path path = dir / (name + ".json");
+  std::ofstream(path) << json;
+  return path.string();
+}
+
+// A 64 x 64 scene around `objects` and `lights` (JSON array texts).
+inline std::string small_scene(const std::string& objects, const std::string& lights = "[]") {
+  return R"({"width": 64, "height": 64,
+    "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "fov": 40, "clear_color": [0, 0, 0]},
+    "lights": )" + lights + R"(, "objects": )" + objects + "}";
+}
+
+inline std::string object_json(const std::string& mesh, const std::string& shader, const std::string& extra = "",
+                               const std::string& position = "[0, 0, 0]") {
+  return R"({"mesh": ")" + mesh + R"(", "position": )" + position + R"(, "material": {"shader": ")" +
+         example_shader(shader) + "\"" + extra + "}}";
+}
+
+inline size_t count_draws(const RenderedFrame& frame, const std::string& light_mode, bool drawn = true) {
+  size_t n = 0;
+  for (const DrawRecord& d : frame.draws) n += d.drawn == drawn && d.light_mode == light_mode;
+  return n;
+}
+
+}  // namespace facet::runtime::test_support

@@ -1,0 +1,133 @@
+// Bad scenes through `facet render`: each kind of mistake gives one clear
+// message naming the file and the JSON path, exit code 1, and no output file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "facet/commands.h"
+#include "render_test_support.h"
+
+namespace facet::runtime {
+namespace {
+
+using test_support::object_json;
+using test_support::small_scene;
+using test_support::write_scene;
+
+struct Outcome {
+  int code = 0;
+  std::string out, err;
+};
+
+Outcome facet_render(const std::vector<std::string>& args) {
+  std::vector<const char*> argv = {"render"};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  Outcome r;
+  r.code = tool::render_command(int(argv.size()), argv.data(), out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+std::string output_path(const std::string& name) {
+  return (test_support::test_dir() / (name + ".png")).string();
+}
+
+Outcome render_bad(const std::string& name, const std::string& json) {
+  std::string png = output_path(name);
+  std::filesystem::remove(png);
+  Outcome r = facet_render({write_scene(name, json), "-o", png});
+  EXPECT_FALSE(std::filesystem::exists(png)) << "an output was written for a bad scene";
+  return r;
+}
+
+TEST(SceneErrors, MissingSceneFileNamesTheFile) {
+  Outcome r = facet_render({"/nonexistent/scene.json", "-o", output_path("missing")});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("/nonexistent/scene.json: cannot open the scene file"), std::string::npos) << r.err;
+}
+
+TEST(SceneErrors, InvalidJsonNamesLineAndColumn) {
+  Outcome r = render_bad("syntax", "{\n  \"width\": 64,\n  \"camera\": {,\n}");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("syntax.json:3:14: invalid JSON"), std::string::npos) << r.err;
+}
+
+TEST(SceneErrors, ColourWithTheWrongNumberOfNumbersNamesTheJsonPath) {
+  std::string objects = "[" + object_json("sphere", "Unlit.shader") + ", " +
+                        object_json("sphere", "Unlit.shader", R"(, "properties": {"_Color": [1, 0]})") + "]";
+  Outcome r = render_bad("bad_color", small_scene(objects));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("bad_color.json: objects[1].material.properties._Color: expected 4 numbers"), std::string::npos)
+      << r.err;
+}
+
+TEST(SceneErrors, UnknownShaderPropertySuggestsTheClosestName) {
+  std::string objects = "[" + object_json("sphere", "Unlit.shader", R"(, "properties": {"_Colr": [1, 0, 0, 1]})") + "]";
+  Outcome r = render_bad("unknown_property", small_scene(objects));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("objects[0].material.properties._Colr: the shader 'Examples/Unlit' has no property '_Colr' "
+                       "(did you mean '_Color'?)"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(SceneErrors, WrongTypeOfAFieldNamesItsPath) {
+  std::string json = small_scene("[" + object_json("sphere", "Unlit.shader") + "]");
+  json.insert(1, R"("time": "noon", )");
+  Outcome r = render_bad("wrong_type", json);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("wrong_type.json: time: expected a number"), std::string::npos) << r.err;
+}
+
+TEST(SceneErrors, MissingShaderFileNamesThePath) {
+  std::string json = small_scene(R"([{"mesh": "cube", "material": {"shader": "no/such.shader"}}])");
+  Outcome r = render_bad("missing_shader", json);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("objects[0].material.shader: shader file"), std::string::npos) << r.err;
+}
+
+TEST(SceneErrors, UnknownMeshAndUnknownKeyAreErrors) {
+  Outcome mesh = render_bad("bad_mesh", small_scene(R"([{"mesh": "teapot", "material": {"shader": "x"}}])"));
+  EXPECT_EQ(mesh.code, 1);
+  EXPECT_NE(mesh.err.find("objects[0].mesh: not a built-in mesh"), std::string::npos) << mesh.err;
+  std::string json = small_scene("[" + object_json("sphere", "Unlit.shader") + "]");
+  json.insert(1, R"("widht": 64, )");
+  Outcome key = render_bad("bad_key", json);
+  EXPECT_EQ(key.code, 1);
+  EXPECT_NE(key.err.find("bad_key.json: widht: unknown key"), std::string::npos) << key.err;
+}
+
+TEST(SceneErrors, UnknownLightTypeListsTheChoices) {
+  Outcome r = render_bad("bad_light", small_scene("[" + object_json("sphere", "Unlit.shader") + "]",
+                                              R"([{"type": "area"}])"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("lights[0].type: unknown value 'area' (expected one of: directional, point, spot)"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(SceneErrors, NoOutputRequestedIsAnError) {
+  Outcome r = facet_render({write_scene("no_output", small_scene("[]"))});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("nothing to write"), std::string::npos) << r.err;
+}
+
+TEST(RenderCommand, WritesAPngWithValidationOnAndPrintsStatsAndExplain) {
+  std::string png = output_path("ok");
+  std::string exr = (test_support::test_dir() / "ok.exr").string();
+  std::filesystem::remove(png);
+  std::filesystem::remove(exr);
+  Outcome r = facet_render({write_scene("ok", small_scene("[" + object_json("sphere", "Unlit.shader") + "]")), "-o", png,
+                            "--exr", exr, "--validation", "--stats", "--explain"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  EXPECT_TRUE(std::filesystem::exists(exr));
+  EXPECT_NE(r.out.find("draws: 1 (0 additive)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("why: no LightMode: drawn once"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace facet::runtime
