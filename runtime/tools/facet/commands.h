@@ -9,5 +9,9 @@
 namespace facet::tool {
 
 int render_command(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+// `facet brdf ...` (docs/brdf-explorer.md).
+int brdf_command(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+// `facet bench accuracy ...` (docs/accuracy.md).
+int bench_command(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 
 }  // namespace facet::tool

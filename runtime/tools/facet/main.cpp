@@ -15,6 +15,9 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a JSON scene to PNG/EXR (facet render scene.json -o out.png)", facet::tool::render_command},
+    {"brdf", "BRDF Explorer views: lit-sphere, polar, slice, albedo (facet brdf ggx:roughness=0.3 --view polar -o p.svg)",
+     facet::tool::brdf_command},
+    {"bench", "the accuracy-versus-cost study (facet bench accuracy --out report.html)", facet::tool::bench_command},
 };
 
 int usage(std::ostream& os) {

@@ -233,3 +233,57 @@ TEST(SurfaceLoweringTest, UnknownOptionIsAWarningNotAnError) {
 
 }  // namespace
 }  // namespace facet
+
+namespace facet {
+namespace {
+
+// finalcolor, screenPos, decal and keepalpha are not in the examples: one
+// shader with all of them compiles every variant, and the generated code
+// calls the final colour function after lighting and before fog.
+TEST(SurfaceLoweringTest, FinalColorScreenPosDecalAndKeepAlphaCompile) {
+  Compiler compiler;
+  auto l = load_text(compiler, R"(Shader "T/Decal" {
+  Properties { _MainTex ("Tex", 2D) = "white" {} _Tint ("Tint", Color) = (1, 1, 1, 1) }
+  SubShader {
+    CGPROGRAM
+    #pragma surface surf Lambert decal:add finalcolor:tint keepalpha nofog noinstancing
+    sampler2D _MainTex;
+    fixed4 _Tint;
+    struct Input { float2 uv_MainTex; float4 screenPos; };
+    void tint(Input IN, SurfaceOutput o, inout fixed4 color) { color *= _Tint; }
+    void surf(Input IN, inout SurfaceOutput o) {
+      float2 screenUV = IN.screenPos.xy / IN.screenPos.w;
+      o.Albedo = tex2D(_MainTex, IN.uv_MainTex).rgb * screenUV.x;
+      o.Alpha = 0.5;
+    }
+    ENDCG
+  }
+})");
+  ASSERT_TRUE(l->shader) << (l->diags.size() ? l->diags.all()[0].message : "");
+  std::string code = generated_text(*l, "FORWARD");
+  size_t lit = code.find("c += LightingLambert(");
+  size_t tinted = code.find("tint(surfIN, o, c);");
+  ASSERT_NE(lit, std::string::npos);
+  ASSERT_NE(tinted, std::string::npos);
+  EXPECT_LT(lit, tinted);
+  EXPECT_NE(code.find("ComputeScreenPos"), std::string::npos);
+  EXPECT_EQ(code.find("UNITY_OPAQUE_ALPHA"), std::string::npos) << "keepalpha and decal keep the alpha";
+  EXPECT_EQ(code.find("UNITY_APPLY_FOG"), std::string::npos) << "nofog";
+  const ir::Pass& base = l->shader->subshaders[0].passes[0];
+  ASSERT_EQ(base.state.blend.size(), 1u);
+  EXPECT_EQ(base.state.blend[0].src.literal, "One");
+  EXPECT_EQ(base.state.blend[0].dst.literal, "One");
+  ASSERT_TRUE(base.state.zwrite && base.state.offset_factor);
+  EXPECT_EQ(base.state.zwrite->literal, "Off");
+  EXPECT_EQ(base.state.offset_factor->literal, "-1");
+  EXPECT_EQ(pass_summary(compiler, *l->shader),
+            (std::vector<std::string>{"FORWARD:ForwardBase[multi_compile_fwdbase]",
+                                      "FORWARD_DELTA:ForwardAdd[multi_compile_fwdadd]"}));
+  CompileOptions options;
+  auto compiled = compiler.compile(*l->shader, options, l->sources, l->diags);
+  ASSERT_TRUE(compiled) << (l->diags.size() ? l->diags.all()[0].message : "");
+  EXPECT_EQ(compiled->stats.variants, 4u + 5u);
+}
+
+}  // namespace
+}  // namespace facet

@@ -1,0 +1,64 @@
+// The accuracy-versus-cost study (`facet bench accuracy`, docs/accuracy.md):
+// for each approximation in the lighting library, its error against the
+// exact reference (computed on the CPU twins in double precision), its
+// static cost (SPIR-V instructions after spirv-opt) and its measured cost
+// (GPU timestamps of a compute pass over a full-screen grid that evaluates
+// it K times per invocation with per-invocation inputs, minus a null pass).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "facet/diagnostics.h"
+#include "facet/result.h"
+
+namespace facet::runtime::accuracy {
+
+struct StudyRow {
+  std::string id;         // "V_SmithGGXCorrelatedFast"
+  std::string group;      // "V", "F", "diffuse", "specular", "Standard", "IBL", "tonemap", "sRGB"
+  std::string name;       // what is measured, in words
+  std::string reference;  // what it is measured against
+  std::string metric;     // what `error` is
+  double error = 0;       // the headline error (0 for reference rows)
+  std::string detail;     // further numbers
+  std::string anchor;     // the measured anchor of pbr-numerics.md section 7, "" when none
+  uint32_t spirv_instructions = 0;    // one evaluation, after spirv-opt, minus the null kernel
+  std::optional<double> ns_per_eval;  // GPU time per evaluation, minus the null pass
+};
+
+struct StudyOptions {
+  std::string device;            // runtime device selector ("" = lavapipe)
+  bool validation = false;
+  uint32_t width = 256, height = 256;  // the invocation grid of the timed pass
+  uint32_t evaluations = 8;      // K: evaluations per invocation
+  uint32_t frames = 11;          // timed dispatches; the median is reported
+  bool gpu = true;               // false: CPU errors and static cost only
+};
+
+struct Study {
+  std::string device;  // the device's description, "" without GPU timing
+  StudyOptions options;
+  std::vector<StudyRow> rows;
+};
+
+// Every row of the catalogue, errors computed, costs measured. Errors
+// (no device, a kernel that does not compile) are diagnostics.
+Result<Study> run_study(const StudyOptions& options, Diagnostics& diags);
+
+// The CPU part only (errors), for tests: no Vulkan, no compiles.
+std::vector<StudyRow> compute_errors();
+
+std::string study_json(const Study& study);
+// One self-contained page: the table and a Pareto chart (error vs ns per
+// evaluation, log-log) in inline SVG.
+std::string study_html(const Study& study);
+
+// `facet bench accuracy [--device D] [--width W --height H] [-K N] [--frames N]
+//  [--no-gpu] [--validation] --out report.html|report.json`; returns the exit code.
+int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace facet::runtime::accuracy

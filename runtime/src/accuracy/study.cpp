@@ -1,0 +1,150 @@
+// run_study: errors on the CPU, SPIR-V instruction counts, GPU timings.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <random>
+
+#include "accuracy/catalogue.h"
+#include "facet/backend.h"
+#include "facet/runtime/evaluator.h"
+#include "facet/runtime/vulkan_context.h"
+
+namespace facet::runtime::accuracy {
+namespace {
+
+constexpr int kInputs = 8;
+
+std::string load_inputs() {
+  std::string out;
+  for (int i = 0; i < kInputs; ++i) out += fmt::format("  float p{} = facet_in[base + {}];\n", i, i);
+  return out;
+}
+
+// One evaluation, inputs from a buffer, the value to a buffer: what the
+// instruction count measures.
+std::string single_kernel(const std::string& includes, const std::string& hlsl) {
+  return includes + "StructuredBuffer<float> facet_in : register(t0);\n"
+                    "RWStructuredBuffer<float> facet_out : register(u1);\n"
+                    "[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {\n"
+                    "  uint base = id.x * " + std::to_string(kInputs) + ";\n" + load_inputs() +
+         "  float value = 0;\n  {\n" + hlsl + "\n  }\n  facet_out[id.x] = value;\n}\n";
+}
+
+// Instructions inside function bodies (OpFunction .. OpFunctionEnd).
+uint32_t body_instructions(const std::vector<uint32_t>& spirv) {
+  uint32_t count = 0;
+  bool inside = false;
+  for (size_t i = 5; i < spirv.size();) {
+    uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xffff;
+    if (words == 0) break;
+    if (opcode == 54) inside = true;   // OpFunction
+    if (inside) ++count;
+    if (opcode == 56) inside = false;  // OpFunctionEnd
+    i += words;
+  }
+  return count;
+}
+
+Result<uint32_t> instruction_count(const std::string& includes, const std::string& hlsl, Diagnostics& diags) {
+  backend::BackendOptions options;
+  options.target = backend::TargetEnv::vulkan1_1;
+  auto spirv = backend::compile_hlsl_compute(single_kernel(includes, hlsl), "main", options, diags);
+  FACET_TRY(spirv);
+  return body_instructions(*spirv);
+}
+
+// K evaluations per invocation; each one's inputs depend on the running sum,
+// so nothing is hoisted out of the loop or shared between iterations.
+EvalFunction timed_function(const std::string& includes, const std::string& hlsl, uint32_t evaluations) {
+  std::string body = "float acc = 0;\n[loop] for (uint k = 0; k < " + std::to_string(evaluations) + "; ++k) {\n"
+                     "  float s = acc * 1e-30;\n";
+  for (int i = 0; i < kInputs; ++i) body += fmt::format("  float p{} = x[{}] + s;\n", i, i);
+  body += "  float value = 0;\n  {\n" + hlsl + "\n  }\n  acc += value;\n}\nr.x = acc;";
+  return {.includes = includes, .hlsl = body, .input_count = kInputs, .output_count = 1};
+}
+
+std::vector<float> varying_inputs(uint32_t points) {
+  std::mt19937 rng(20261201);
+  std::uniform_real_distribution<float> dist(0.05f, 1.0f);
+  std::vector<float> out(size_t(points) * kInputs);
+  for (float& v : out) v = dist(rng);
+  return out;
+}
+
+Result<double> median_gpu_ns(const Context& context, const FunctionEvaluator& evaluator, size_t function,
+                             const std::vector<float>& points, uint32_t count, uint32_t frames, Diagnostics& diags) {
+  std::vector<double> times;
+  for (uint32_t f = 0; f < frames + 1; ++f) {
+    auto result = evaluate(context, evaluator, function, points, count);
+    if (!result || !result->gpu_ns) {
+      diags.add(DiagId::driver_bad_option, {}, "the device gives no timestamps for the accuracy study's passes");
+      return failure("no timing");
+    }
+    if (f > 0) times.push_back(double(*result->gpu_ns));  // the first dispatch warms up
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
+Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>& specs, Study& study,
+                         Diagnostics& diags) {
+  auto context = create_context({.device = options.device, .validation = options.validation});
+  if (!context) {
+    diags.add(DiagId::driver_bad_option, {}, "no Vulkan device for the accuracy study: " + describe(context.error()));
+    return failure("no device");
+  }
+  study.device = (*context)->device_info().name;
+  std::vector<EvalFunction> functions{timed_function("", kNullModel, options.evaluations)};
+  for (const RowSpec& s : specs) functions.push_back(timed_function(s.includes, s.hlsl, options.evaluations));
+  auto evaluator = compile_evaluator(**context, functions, {}, diags);
+  if (!evaluator) return failure("the timed passes did not compile");
+  const uint32_t points = options.width * options.height;
+  const std::vector<float> inputs = varying_inputs(points);
+  auto null_ns = median_gpu_ns(**context, *evaluator, 0, inputs, points, options.frames, diags);
+  FACET_TRY(null_ns);
+  const double evaluations = double(points) * options.evaluations;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    auto ns = median_gpu_ns(**context, *evaluator, i + 1, inputs, points, options.frames, diags);
+    FACET_TRY(ns);
+    study.rows[i].ns_per_eval = std::max(0.0, *ns - *null_ns) / evaluations;
+  }
+  if (options.validation && !(*context)->messages().empty()) {
+    diags.add(DiagId::driver_bad_option, {}, "validation layers reported: " + (*context)->messages()[0].text);
+    return failure("validation");
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<StudyRow> compute_errors() {
+  std::vector<StudyRow> rows;
+  for (const RowSpec& s : catalogue()) {
+    StudyRow row = s.row;
+    if (s.measure) s.measure(row);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+Result<Study> run_study(const StudyOptions& options, Diagnostics& diags) {
+  Study study{.options = options, .rows = compute_errors()};
+  const std::vector<RowSpec> specs = catalogue();
+  auto null_count = instruction_count("", kNullModel, diags);
+  FACET_TRY(null_count);
+  for (size_t i = 0; i < specs.size(); ++i) {
+    auto count = instruction_count(specs[i].includes, specs[i].hlsl, diags);
+    if (!count) {
+      diags.add(DiagId::driver_bad_option, {}, "the accuracy row '" + specs[i].row.id + "' does not compile");
+      return failure("row does not compile");
+    }
+    study.rows[i].spirv_instructions = *count > *null_count ? *count - *null_count : 0;
+  }
+  if (options.gpu) {
+    auto measured = measure_gpu(options, specs, study, diags);
+    FACET_TRY(measured);
+  }
+  return study;
+}
+
+}  // namespace facet::runtime::accuracy
