@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "facet/runtime/accuracy.h"
+#include "unit/runtime/context_fixture.h"  // keeps lavapipe mapped for LeakSanitizer
 
 namespace facet::runtime::accuracy {
 namespace {
@@ -69,6 +70,7 @@ TEST(AccuracyStudyTest, ErrorsAgreeWithTheMeasuredAnchors) {
 }
 
 TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructions) {
+  (void)test_support::kLavapipePinned;
   Diagnostics diags;
   StudyOptions options{.validation = true, .width = 16, .height = 16, .evaluations = 2, .frames = 1};
   auto study = run_study(options, diags);
@@ -95,6 +97,7 @@ TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructio
 }
 
 TEST(AccuracyCommandTest, WritesTheReportAndRejectsBadArguments) {
+  (void)test_support::kLavapipePinned;
   namespace fs = std::filesystem;
   fs::path dir = fs::temp_directory_path() / ("facet_accuracy_" + std::to_string(::getpid()));
   fs::create_directories(dir);
