@@ -207,7 +207,7 @@ float FacetD_GGX_FP16Safe(float3 n, float3 h, float alpha)
     float oneMinusNoH2 = dot(nxh, nxh);
     float a = dot(n, h) * alpha;
     float k = min(alpha / (oneMinusNoH2 + a * a), FACET_GGX_FP16_K_MAX);
-    return k * k * FACET_INV_PI;
+    return k * (k * FACET_INV_PI);  // not (k * k) / pi: k^2 alone overflows half for k > 256
 }
 // Anisotropic GGX (Burley 2012) in Filament's arrangement; HoX/HoY are against
 // the tangent/bitangent, alphaX/alphaY >= FACET_MIN_ALPHA.

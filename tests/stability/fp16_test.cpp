@@ -49,8 +49,8 @@ DError d_error(double alpha, Form form, bool clamped_reference) {
 
 auto naive = [](half, half c, half a) { return h16::D_GGX<half>(c, a); };
 auto safe = [](half s, half c, half a) { return h16::D_GGX_FP16Safe<half>({0, 0, 1}, {s, 0, c}, a); };
-auto reassociated = [](half s, half c, half a) {
-  return h16::D_GGX_FP16SafeReassociated<half>({0, 0, 1}, {s, 0, c}, a);
+auto unassociated = [](half s, half c, half a) {
+  return h16::D_GGX_FP16SafeUnassociated<half>({0, 0, 1}, {s, 0, c}, a);
 };
 
 TEST(StabilityFp16Test, NaiveGgxFailsAndTheCrossProductFormHoldsOnePercent) {
@@ -71,24 +71,24 @@ TEST(StabilityFp16Test, NaiveGgxFailsAndTheCrossProductFormHoldsOnePercent) {
 }
 
 // T3: at the fp32 clamp alpha = 0.002025 the peak 1/(pi alpha^2) = 77 625 is
-// beyond half (65 504): the naive form overflows. The stdlib's safe form
-// clamps k to 453.5 but then forms k * k = 205 662 before the 1/pi, which
-// overflows too, for every alpha below 1/256 (k > 256); associated as
-// k * (k / pi) it stays finite everywhere (a stdlib issue, docs/stability.md).
-TEST(StabilityFp16Test, AtTheFp32ClampNaiveAndStdlibSafeFormsOverflowHalfAndTheReassociatedOneDoesNot) {
+// beyond half (65 504): the naive form overflows. The safe form clamps k to
+// 453.5; written k * k * (1/pi) it formed k^2 = 205 662 first and overflowed
+// too for every alpha below 1/256 (k > 256), which this suite found; the
+// stdlib now writes k * (k / pi), finite everywhere.
+TEST(StabilityFp16Test, AtTheFp32ClampNaiveFormOverflowsHalfAndTheStdlibSafeFormDoesNot) {
   if (!h16::kHasHalf) GTEST_SKIP() << "no _Float16";
   half one(1), zero(0), a(reference::FACET_MIN_ALPHA);
   EXPECT_TRUE(std::isinf(float(h16::D_GGX<half>(one, a))));
   EXPECT_NEAR(double(h16::D_GGX<double>(1.0, reference::FACET_MIN_ALPHA)), 77625, 1);
-  EXPECT_TRUE(std::isinf(float(h16::D_GGX_FP16Safe<half>({0, 0, 1}, {zero, 0, one}, a))));
+  EXPECT_TRUE(std::isinf(float(h16::D_GGX_FP16SafeUnassociated<half>({0, 0, 1}, {zero, 0, one}, a))));
   for (double alpha : {reference::FACET_MIN_ALPHA, 0.0039}) {
-    EXPECT_GT(d_error(alpha, safe, true).infinite, 0) << alpha;
-    DError r = d_error(alpha, reassociated, true);
+    EXPECT_GT(d_error(alpha, unassociated, true).infinite, 0) << alpha;
+    DError r = d_error(alpha, safe, true);
     EXPECT_EQ(r.infinite, 0) << alpha;
     EXPECT_LE(r.worst, 0.02) << alpha;
   }
   for (double alpha : {0.004, reference::FACET_MIN_ALPHA_FP16}) EXPECT_EQ(d_error(alpha, safe, true).infinite, 0) << alpha;
-  EXPECT_LE(float(h16::D_GGX_FP16SafeReassociated<half>({0, 0, 1}, {zero, 0, one}, a)), 65504.0f);
+  EXPECT_LE(float(h16::D_GGX_FP16Safe<half>({0, 0, 1}, {zero, 0, one}, a)), 65504.0f);
 }
 
 // V and F in half: where they overflow or lose precision.
@@ -154,7 +154,7 @@ float safe_d16(float s, float c, float alpha) {
   float oneMinusNoH2 = hr(s * s);
   float a = hr(c * alpha);
   float k = min(hr(alpha / hr(oneMinusNoH2 + hr(a * a))), 453.5);
-  return hr(hr(k * k) * hr(0.31830988618));
+  return hr(k * hr(k * hr(0.31830988618)));
 }
 #endif
 )";

@@ -157,7 +157,7 @@ double ggx_cross_half(double NoH, double alpha) {
   _Float16 an = hz * a;
   _Float16 k = a / (one_minus + an * an);
   k = std::min(k, _Float16(453.5));
-  return double(k * k * _Float16(1.0 / M_PI));
+  return double(k * (k * _Float16(1.0 / M_PI)));
 }
 
 void fp16_d_row(StudyRow& row, double (*half_form)(double, double)) {

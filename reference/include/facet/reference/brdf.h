@@ -137,7 +137,7 @@ inline double FacetD_GGX_FP16Safe(const glm::dvec3& n, const glm::dvec3& h, doub
   double oneMinusNoH2 = glm::dot(nxh, nxh);
   double a = glm::dot(n, h) * alpha;
   double k = std::min(alpha / (oneMinusNoH2 + a * a), FACET_GGX_FP16_K_MAX);
-  return k * k * kInvPi;
+  return k * (k * kInvPi);
 }
 inline double FacetD_GGXAnisotropic(double NoH, double HoX, double HoY, double alphaX, double alphaY) {
   double a2 = alphaX * alphaY;

@@ -54,10 +54,10 @@ inline T D_GGX(T NoH, T alpha) {
   return a2 / (kPi<T> * d * d);
 }
 
-// FacetD_GGX_FP16Safe as the stdlib writes it: |n x h|^2 and k <= 453.5,
-// then k * k * (1/pi).
+// FacetD_GGX_FP16Safe as the stdlib wrote it before the fix: |n x h|^2 and
+// k <= 453.5, then k * k * (1/pi), whose k^2 overflows half for k > 256.
 template <class T>
-inline T D_GGX_FP16Safe(const Vec3<T>& n, const Vec3<T>& h, T alpha) {
+inline T D_GGX_FP16SafeUnassociated(const Vec3<T>& n, const Vec3<T>& h, T alpha) {
   Vec3<T> nxh = cross(n, h);
   T oneMinusNoH2 = dot(nxh, nxh);
   T a = dot(n, h) * alpha;
@@ -66,11 +66,11 @@ inline T D_GGX_FP16Safe(const Vec3<T>& n, const Vec3<T>& h, T alpha) {
   return k * k * kInvPi<T>;
 }
 
-// The same with the last product associated as k * (k * (1/pi)), which keeps
-// every intermediate below 65 504 when k <= 453.5 (453.5^2 = 205 662 alone
-// does not fit in half).
+// FacetD_GGX_FP16Safe as the stdlib writes it: the last product associated
+// as k * (k * (1/pi)), which keeps every intermediate below 65 504 when
+// k <= 453.5 (453.5^2 = 205 662 alone does not fit in half).
 template <class T>
-inline T D_GGX_FP16SafeReassociated(const Vec3<T>& n, const Vec3<T>& h, T alpha) {
+inline T D_GGX_FP16Safe(const Vec3<T>& n, const Vec3<T>& h, T alpha) {
   Vec3<T> nxh = cross(n, h);
   T oneMinusNoH2 = dot(nxh, nxh);
   T a = dot(n, h) * alpha;
