@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # facet's main job on a fresh Debian 12 machine: install dependencies, build,
-# then compile every example shader (all variants) into .facetpkg packages and
-# print what was built.
+# compile every example shader (all variants) into .facetpkg packages, then
+# render the showcase scene with `facet render` (lavapipe by default).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
@@ -10,3 +10,5 @@ out="$root/out/packages"
 mkdir -p "$out"
 "$root/build/compiler/facetc" --all-variants --stats --out-dir "$out" "$root"/examples/shaders/*.shader
 echo "packages written to $out"
+"$root/build/runtime/facet" render "$root/examples/scenes/showcase.json" -o "$root/out/showcase.png" --stats
+echo "showcase scene rendered to $root/out/showcase.png"

@@ -8,12 +8,14 @@ namespace {
 InputField classify(const backend::AnalyzedField& f) {
   InputField in{.name = f.name, .type = f.type};
   auto is = [&](std::string_view n) { return f.name == n; };
+  // Unity's rule: "uv" + the texture's name, which starts with '_'
+  // (uv_MainTex reads _MainTex through _MainTex_ST).
   if (f.name.starts_with("uv2_")) {
     in.kind = InputKind::uv2;
-    in.texture = f.name.substr(4);
+    in.texture = f.name.substr(3);
   } else if (f.name.starts_with("uv_")) {
     in.kind = InputKind::uv;
-    in.texture = f.name.substr(3);
+    in.texture = f.name.substr(2);
   } else if (is("viewDir")) {
     in.kind = InputKind::view_dir;
   } else if (is("worldPos")) {

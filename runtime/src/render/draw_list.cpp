@@ -55,6 +55,46 @@ Role role_of(const ir::Pass& pass, std::string& why) {
   return Role::skip;
 }
 
+}  // namespace
+
+Result<void, RenderError> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
+                                   ObjectState& object, size_t pass_index, const LightValues* light,
+                                   const std::vector<std::string>& global, DrawRecord record, DrawListResult& out) {
+  ShaderAsset& asset = *object.shader;
+  const SelectedPass& pass = asset.passes[pass_index];
+  Diagnostics diags;
+  Result<variants::Selection> pick =
+      variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
+  std::string where = fmt::format("{}: {}: shader '{}' pass {}", scene.path, object.scene->material.json_path,
+                                  asset.shader.name, record.pass);
+  if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+  bool compiled = false;
+  Result<CompiledVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
+  if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});
+  if (compiled) {
+    ++out.variants_compiled;
+    out.compiled.push_back(fmt::format("{} {}: {}", asset.shader.name, record.pass, join((*variant)->keywords)));
+  }
+  Result<PipelineState, StateError> state = resolve_state(pass.ir->state, object.material);
+  if (!state) return unexpected(RenderError{fmt::format("{}: {}", where, state.error().message)});
+  Draw draw;
+  draw.object = object.index;
+  draw.pass = pass_index;
+  draw.light = light;
+  draw.variant = *variant;
+  draw.state = *state;
+  record.keywords = (*variant)->keywords;
+  record.exact = pick->exact;
+  record.state = describe(*state);
+  if (!pick->exact) record.why += "; no exact variant, Unity's closest match";
+  if (!pick->unknown_keywords.empty()) record.why += "; ignored (not declared): " + join(pick->unknown_keywords);
+  draw.record = std::move(record);
+  out.draws.push_back(std::move(draw));
+  return {};
+}
+
+namespace {
+
 struct Builder {
   const Context& context;
   const Scene& scene;
@@ -65,37 +105,7 @@ struct Builder {
 
   Result<void, RenderError> add(ObjectState& object, size_t pass_index, const LightValues* light,
                                 const std::vector<std::string>& global, DrawRecord record) {
-    ShaderAsset& asset = *object.shader;
-    const SelectedPass& pass = asset.passes[pass_index];
-    Diagnostics diags;
-    Result<variants::Selection> pick =
-        variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
-    std::string where = fmt::format("{}: {}.material: shader '{}' pass {}", scene.path, object.scene->json_path,
-                                    asset.shader.name, record.pass);
-    if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
-    bool compiled = false;
-    Result<CompiledVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
-    if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});
-    if (compiled) {
-      ++out.variants_compiled;
-      out.compiled.push_back(fmt::format("{} {}: {}", asset.shader.name, record.pass, join((*variant)->keywords)));
-    }
-    Result<PipelineState, StateError> state = resolve_state(pass.ir->state, object.material);
-    if (!state) return unexpected(RenderError{fmt::format("{}: {}", where, state.error().message)});
-    Draw draw;
-    draw.object = object.index;
-    draw.pass = pass_index;
-    draw.light = light;
-    draw.variant = *variant;
-    draw.state = *state;
-    record.keywords = (*variant)->keywords;
-    record.exact = pick->exact;
-    record.state = describe(*state);
-    if (!pick->exact) record.why += "; no exact variant, Unity's closest match";
-    if (!pick->unknown_keywords.empty()) record.why += "; ignored (not declared): " + join(pick->unknown_keywords);
-    draw.record = std::move(record);
-    out.draws.push_back(std::move(draw));
-    return {};
+    return add_draw(context, scene, library, object, pass_index, light, global, std::move(record), out);
   }
 
   Result<void, RenderError> object_draws(ObjectState& object) {

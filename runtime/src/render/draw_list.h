@@ -68,6 +68,13 @@ struct DrawListResult {
   std::vector<std::string> compiled;  // descriptions, compile order
 };
 
+// Appends the draw of pass `pass_index` of `object` to out.draws: the
+// variant Unity would pick for the material's and the `global` keywords
+// (compiled on first use) and the render state resolved against the material.
+Result<void, RenderError> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
+                                   ObjectState& object, size_t pass_index, const LightValues* light,
+                                   const std::vector<std::string>& global, DrawRecord record, DrawListResult& out);
+
 Result<DrawListResult, RenderError> build_draws(const Context& context, const Scene& scene,
                                                 std::vector<ObjectState>& objects, const LightSetup& lights,
                                                 ShaderLibrary& library);

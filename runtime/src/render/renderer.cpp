@@ -5,12 +5,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/vulkan_context.h"
 #include "render/draw_list.h"
+#include "render/post.h"
 #include "render/resources.h"
 
 namespace facet::runtime {
@@ -78,7 +81,10 @@ VkFormat depth_format(const Context& context) {
   return stencil ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
 }
 
-Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth) {
+// `sampled`: the colour (and with `depth_sampled` the depth) image ends in
+// SHADER_READ_ONLY_OPTIMAL for the image-effect chain instead of being read back.
+Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth, bool sampled = false,
+                                                   bool depth_sampled = false) {
   VkAttachmentDescription attachments[2]{};
   attachments[0].format = VK_FORMAT_R16G16B16A16_SFLOAT;
   attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
@@ -87,12 +93,13 @@ Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat dep
   attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  attachments[0].finalLayout = sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   attachments[1] = attachments[0];
   attachments[1].format = depth;
-  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].storeOp = depth_sampled ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  attachments[1].finalLayout = depth_sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+                                             : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
@@ -103,10 +110,10 @@ Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat dep
   VkSubpassDependency after{};
   after.srcSubpass = 0;
   after.dstSubpass = VK_SUBPASS_EXTERNAL;
-  after.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  after.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  after.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  after.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  after.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  after.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  after.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = 2;
   info.pAttachments = attachments;
@@ -119,6 +126,94 @@ Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat dep
     return unexpected(error("cannot create the render pass: " + vk_result_name(r)));
   }
   return pass;
+}
+
+// The image-effect chain's two ping-pong images, its colour-only render pass
+// and a framebuffer per image.
+struct PostTargets {
+  VkDevice device = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  std::array<Image, 2> images;
+  std::array<VkFramebuffer, 2> framebuffers{};
+  VkSampler point_sampler = VK_NULL_HANDLE;  // the camera depth texture's, as Unity's: point, clamp
+  ~PostTargets() {
+    if (!device) return;
+    vkDeviceWaitIdle(device);
+    if (point_sampler) vkDestroySampler(device, point_sampler, nullptr);
+    for (VkFramebuffer f : framebuffers)
+      if (f) vkDestroyFramebuffer(device, f, nullptr);
+    if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
+  }
+};
+
+Result<void, RenderError> make_post_targets(const Context& context, PostTargets& t, int width, int height) {
+  t.device = context.device();
+  VkAttachmentDescription a{};
+  a.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  a.samples = VK_SAMPLE_COUNT_1_BIT;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every step covers every pixel
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  a.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color;
+  // Before: the image was the source of the step before last (write after read).
+  // After: the next step samples it, or the readback copies it.
+  VkSubpassDependency deps[2]{};
+  deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  deps[0].dstSubpass = 0;
+  deps[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+  deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  deps[0].srcAccessMask = VK_ACCESS_SHADER_READ_BIT;
+  deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  deps[1].srcSubpass = 0;
+  deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+  deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &a;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 2;
+  info.pDependencies = deps;
+  if (VkResult r = vkCreateRenderPass(t.device, &info, nullptr, &t.render_pass); r != VK_SUCCESS) {
+    return unexpected(error("cannot create the image-effect render pass: " + vk_result_name(r)));
+  }
+  VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
+  sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  if (vkCreateSampler(t.device, &sampler, nullptr, &t.point_sampler) != VK_SUCCESS) {
+    return unexpected(error("cannot create the depth texture's sampler"));
+  }
+  for (size_t i = 0; i < 2; ++i) {
+    VkResultOf<Image> image = create_image(context, {.width = uint32_t(width), .height = uint32_t(height),
+                                                     .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                     .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+    if (!image) return unexpected(error(describe(image.error())));
+    t.images[i] = std::move(*image);
+    VkImageView view = t.images[i].view();
+    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fb.renderPass = t.render_pass;
+    fb.attachmentCount = 1;
+    fb.pAttachments = &view;
+    fb.width = uint32_t(width);
+    fb.height = uint32_t(height);
+    fb.layers = 1;
+    if (vkCreateFramebuffer(t.device, &fb, nullptr, &t.framebuffers[i]) != VK_SUCCESS) {
+      return unexpected(error("cannot create an image-effect framebuffer"));
+    }
+  }
+  return {};
 }
 
 Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data) {
@@ -202,8 +297,11 @@ struct Recorder {
   Resources& resources;
   UniformArena& arena;
   VkDescriptorPool pool;
+  std::map<std::string, const Image*> overrides;  // by resource name: the chain's _MainTex and depth
+  VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
 
   Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object) {
+    if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
     if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
       auto it = object.material.textures.find(r.name);
       if (it != object.material.textures.end()) {
@@ -258,6 +356,7 @@ struct Recorder {
         if (r.kind != ResourceKind::separate_sampler) {
           Result<const Image*, RenderError> image = image_for(r, object);
           if (!image) return unexpected(image.error());
+          if (is_depth_format((*image)->desc().format) && point_sampler) info.sampler = point_sampler;
           info.imageView = (*image)->view();
           info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
           type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
@@ -283,10 +382,14 @@ struct Recorder {
   }
 };
 
-Result<VkDescriptorPool, RenderError> make_pool(VkDevice device, const std::vector<Draw>& draws) {
+Result<VkDescriptorPool, RenderError> make_pool(VkDevice device, const std::vector<const std::vector<Draw>*>& lists) {
   std::map<VkDescriptorType, uint32_t> counts;
   uint32_t sets = 0;
-  for (const Draw& d : draws) {
+  std::vector<const Draw*> draws;
+  for (const std::vector<Draw>* list : lists)
+    for (const Draw& d : *list) draws.push_back(&d);
+  for (const Draw* dp : draws) {
+    const Draw& d = *dp;
     const GpuProgram& p = *d.variant->program;
     for (bool used : p.set_used) sets += used;
     counts[VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER] += uint32_t(p.blocks.size());
@@ -364,19 +467,37 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   LightSetup lights = setup_lights(scene);
   Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
   if (!list) return unexpected(list.error());
+  std::unique_ptr<GpuMesh> quad;
+  std::unique_ptr<PostChain> post;
+  if (!scene.post.empty()) {
+    Result<GpuMesh, RenderError> q = upload_mesh(context, *builtin_mesh("quad"));
+    if (!q) return unexpected(q.error());
+    quad = std::make_unique<GpuMesh>(std::move(*q));
+    auto chain = build_post_chain(context, scene, library, resources, quad.get(), &lights.none, frame.width, frame.height);
+    if (!chain) return unexpected(chain.error());
+    post = std::move(*chain);
+  }
+  // The camera depth texture is the depth buffer itself, kept when an image
+  // effect samples it; D32 without stencil, so that it can be sampled.
+  bool depth_sampled = post && std::any_of(post->list.draws.begin(), post->list.draws.end(),
+                                           [](const Draw& d) { return samples(d, "_CameraDepthTexture"); });
 
   FrameObjects fo;
   fo.device = context.device();
-  VkFormat depth = depth_format(context);
+  VkFormat depth = depth_sampled ? VK_FORMAT_D32_SFLOAT : depth_format(context);
   VkResultOf<Image> color = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+                                                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                                            (post ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
   if (!color) return unexpected(error(describe(color.error())));
   VkResultOf<Image> depth_image = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
                                                          .format = depth,
-                                                         .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT});
+                                                         .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                                                  (depth_sampled ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
   if (!depth_image) return unexpected(error(describe(depth_image.error())));
-  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth);
+  PostTargets targets;
+  if (post) FACET_TRY(make_post_targets(context, targets, frame.width, frame.height));
+  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth, post != nullptr, depth_sampled);
   if (!pass) return unexpected(pass.error());
   fo.render_pass = *pass;
   VkImageView views[2] = {color->view(), depth_image->view()};
@@ -401,7 +522,18 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     pipelines.push_back(*p);
     frame.stats.pipelines += created;
   }
-  Result<VkDescriptorPool, RenderError> pool = make_pool(context.device(), list->draws);
+  std::vector<Draw> no_draws;
+  std::vector<VkPipeline> post_pipelines;
+  for (const Draw& d : post ? post->list.draws : no_draws) {
+    bool created = false;
+    Result<VkPipeline, std::string> p =
+        get_pipeline(context, *d.variant->program, d.state, false, targets.render_pass, fo.cache, &created);
+    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+    post_pipelines.push_back(*p);
+    frame.stats.pipelines += created;
+  }
+  Result<VkDescriptorPool, RenderError> pool =
+      make_pool(context.device(), {&list->draws, post ? &post->list.draws : &no_draws});
   if (!pool) return unexpected(pool.error());
   fo.pool = *pool;
   UniformArena arena(context);
@@ -447,11 +579,38 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
       frame.stats.triangles += object.mesh->index_count / 3;
     }
     vkCmdEndRenderPass(commands);
+    const Image* result = &*color;
+    for (size_t i = 0; post && i < post->list.draws.size() && !failed; ++i) {
+      VkRenderPassBeginInfo step{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      step.renderPass = targets.render_pass;
+      step.framebuffer = targets.framebuffers[i % 2];
+      step.renderArea = begin.renderArea;
+      vkCmdBeginRenderPass(commands, &step, VK_SUBPASS_CONTENTS_INLINE);
+      vkCmdSetViewport(commands, 0, 1, &viewport);
+      vkCmdSetScissor(commands, 0, 1, &scissor);
+      recorder.overrides = {{"_MainTex", result}};
+      if (depth_sampled) recorder.overrides["_CameraDepthTexture"] = &*depth_image;
+      recorder.point_sampler = targets.point_sampler;
+      vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, post_pipelines[i]);
+      if (Result<void, RenderError> bound = recorder.bind(commands, post->list.draws[i], post->steps[i], frame_values);
+          !bound) {
+        failed = bound.error();
+      }
+      VkBuffer vb = quad->vertices.handle();
+      VkDeviceSize offset = 0;
+      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
+      vkCmdBindIndexBuffer(commands, quad->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      if (!failed) vkCmdDrawIndexed(commands, quad->index_count, 1, 0, 0, 0);
+      vkCmdEndRenderPass(commands);
+      frame.stats.triangles += quad->index_count / 3;
+      result = &targets.images[i % 2];
+    }
+    if (post) transition(commands, *result, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     if (queries) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
-    vkCmdCopyImageToBuffer(commands, color->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->handle(), 1, &region);
+    vkCmdCopyImageToBuffer(commands, result->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->handle(), 1, &region);
     VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -473,9 +632,15 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     frame.draws.push_back(std::move(d.record));
   }
   frame.stats.draws = list->draws.size();
-  for (DrawRecord& r : list->skipped) frame.draws.push_back(std::move(r));
   frame.compiled = std::move(list->compiled);
   frame.stats.variants_compiled = list->variants_compiled;
+  if (post) {
+    for (Draw& d : post->list.draws) frame.draws.push_back(std::move(d.record));
+    frame.stats.draws += post->list.draws.size();
+    frame.compiled.insert(frame.compiled.end(), post->list.compiled.begin(), post->list.compiled.end());
+    frame.stats.variants_compiled += post->list.variants_compiled;
+  }
+  for (DrawRecord& r : list->skipped) frame.draws.push_back(std::move(r));
   frame.stats.shaders_loaded = library.loaded();
   frame.stats.textures_loaded = resources.textures_loaded();
   frame.stats.compile_ms = library.seconds() * 1000;

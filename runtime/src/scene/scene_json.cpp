@@ -289,9 +289,21 @@ struct Reader {
     return f;
   }
 
+  // A material plus the pass to blit with.
+  ScenePostEffect post_effect(const json& j, const std::string& path) const {
+    check_keys(j, path, {"shader", "properties", "keywords", "pass"});
+    ScenePostEffect e;
+    e.json_path = path;
+    if (j.contains("pass")) e.pass = integer(member(j, "pass"), join(path, "pass"), 0, 63);
+    json material_only = j;
+    material_only.erase("pass");
+    e.material = material(material_only, path);
+    return e;
+  }
+
   Scene scene(const json& j) const {
     check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
-                       "pixel_light_count"});
+                       "pixel_light_count", "post"});
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
@@ -317,6 +329,11 @@ struct Reader {
                                 {{"none", Tonemap::none}, {"reinhard", Tonemap::reinhard}, {"aces", Tonemap::aces}});
     }
     if (j.contains("pixel_light_count")) s.pixel_light_count = integer(member(j, "pixel_light_count"), "pixel_light_count", 0, 64);
+    if (j.contains("post")) {
+      const json& post = member(j, "post");
+      if (!post.is_array()) throw Bad{"post", "expected a list of image effects"};
+      for (size_t i = 0; i < post.size(); ++i) s.post.push_back(post_effect(post[i], index("post", i)));
+    }
     return s;
   }
 };

@@ -116,6 +116,16 @@ TEST(SurfaceLoweringTest, OnlyInputFieldsSurfReadsAreInterpolated) {
   EXPECT_EQ(code.find("surf_worldPos"), std::string::npos) << "worldPos is declared but never read";
 }
 
+TEST(SurfaceLoweringTest, UvFieldsUseTheirTexturesScaleOffset) {
+  Compiler compiler;
+  auto l = load(compiler, example("SurfaceStandard.shader"));
+  ASSERT_TRUE(l->shader);
+  std::string code = generated_text(*l, "FORWARD");
+  EXPECT_NE(code.find("TRANSFORM_TEX(v.texcoord, _MainTex)"), std::string::npos) << code;
+  EXPECT_NE(code.find("float4 _MainTex_ST;"), std::string::npos);
+  EXPECT_EQ(code.find(" MainTex_ST"), std::string::npos) << "uv_MainTex names _MainTex, not MainTex";
+}
+
 TEST(SurfaceLoweringTest, WritingTheNormalGivesATangentFrame) {
   Compiler compiler;
   auto normal_mapped = load(compiler, example("SurfaceBlinnPhongNormal.shader"));

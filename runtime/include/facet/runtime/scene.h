@@ -104,6 +104,14 @@ struct SceneObject {
   SceneMaterial material;
 };
 
+// One step of the image-effect chain, as Unity's Graphics.Blit(source,
+// destination, material, pass): the previous image is bound as _MainTex.
+struct ScenePostEffect {
+  std::string json_path;            // "post[0]"
+  SceneMaterial material;
+  int pass = 0;                     // into the passes of the shader's SubShader
+};
+
 struct Scene {
   std::string path;                 // as given, for messages
   int width = 256, height = 256;
@@ -115,6 +123,7 @@ struct Scene {
   SceneFog fog;
   Tonemap tonemap = Tonemap::none;
   int pixel_light_count = 4;        // Unity's default pixel light limit
+  std::vector<ScenePostEffect> post;  // image effects, in order, before tone mapping
 };
 
 // Parses `text`; `path` names the file in messages and anchors relative paths.

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Regenerates the example textures with OpenImageIO's oiiotool (the committed
+# PNGs are its output; rerun after changing a line here and update the goldens).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# An 8 x 8 checker with a red 16 x 16 block at the image's bottom-left, so that
+# a flipped or transposed uv shows in a render.
+oiiotool --pattern checker:width=8:height=8:color1=0.9,0.85,0.7:color2=0.25,0.3,0.45 64x64 3 \
+  --fill:color=0.8,0.1,0.1 16x16+0+48 -d uint8 -o checker.png
+
+# White with alpha rising from 0.3 (left) to 0.8 (right): the transparent
+# materials' coverage.
+oiiotool --pattern fill:left=1,1,1,0.3:right=1,1,1,0.8 32x32 4 -d uint8 -o glass.png
+
+# A tangent-space normal map of tiles tilted alternately left and right
+# (linear data: load it with "srgb": false).
+oiiotool --pattern checker:width=8:height=8:color1=0.75,0.5,0.93:color2=0.25,0.5,0.93 32x32 3 -d uint8 -o tiles_normal.png

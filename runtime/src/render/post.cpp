@@ -1,0 +1,110 @@
+#include "render/post.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/frame_values.h"
+
+namespace facet::runtime {
+namespace {
+
+RenderError error(std::string message) { return RenderError{std::move(message)}; }
+
+// The built-in quad (-0.5..0.5, uv 0..1) moved to 0..1 and a view-projection
+// taking that square to the whole of Vulkan's clip space. uv.y = 0 lands on
+// image row 0, the top, which is also texel row 0 of every source: the chain
+// samples each image where it was drawn (the UNITY_UV_STARTS_AT_TOP layout).
+UniformValues blit_uniforms() {
+  UniformValues v = draw_uniforms(glm::translate(glm::mat4(1), glm::vec3(0.5f, 0.5f, 0)));
+  glm::mat4 to_clip = glm::translate(glm::mat4(1), glm::vec3(-1, -1, 0)) * glm::scale(glm::mat4(1), glm::vec3(2, 2, 1));
+  glm::mat4 identity(1);
+  v.set_matrix("unity_MatrixVP", glm::value_ptr(to_clip));
+  v.set_matrix("unity_MatrixP", glm::value_ptr(to_clip));
+  v.set_matrix("unity_MatrixV", glm::value_ptr(identity));
+  v.set_matrix("unity_MatrixInvV", glm::value_ptr(identity));
+  return v;
+}
+
+Result<void, RenderError> texel_sizes(Material& material, Resources& resources, const Scene& scene,
+                                      const ScenePostEffect& effect) {
+  for (const auto& [name, ref] : material.textures) {
+    Result<const LoadedTexture*, std::string> t = resources.texture(ref);
+    if (!t) return unexpected(error(fmt::format("{}: {}.properties.{}: {}", scene.path, effect.json_path, name, t.error())));
+    float w = float((*t)->width), h = float((*t)->height);
+    material.uniforms.set_vector(name + "_TexelSize", 1 / w, 1 / h, w, h);
+  }
+  return {};
+}
+
+DrawRecord step_record(const PostChain& chain, size_t i, size_t pass_index) {
+  const ObjectState& s = chain.steps[i];
+  const SelectedPass& pass = s.shader->passes[pass_index];
+  DrawRecord r;
+  r.object = fmt::format("{} (image effect)", s.scene->json_path);
+  r.object_index = i;
+  r.shader = s.shader->shader.name;
+  r.pass = pass.ir->name.empty() ? std::to_string(pass.pass) : fmt::format("{} {}", pass.pass, pass.ir->name);
+  r.light_mode = pass.ir->tag("LightMode");
+  r.queue = s.queue;
+  r.why = fmt::format("image effect step {}: the {} image bound as _MainTex", i + 1,
+                      i == 0 ? "camera's" : "previous step's");
+  return r;
+}
+
+}  // namespace
+
+bool samples(const Draw& draw, std::string_view name) {
+  const std::vector<ResourceBinding>& r = draw.variant->program->resources;
+  return std::any_of(r.begin(), r.end(), [&](const ResourceBinding& b) { return b.name == name; });
+}
+
+Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& context, const Scene& scene,
+                                                                 ShaderLibrary& library, Resources& resources,
+                                                                 GpuMesh* quad, const LightValues* none, int width,
+                                                                 int height) {
+  auto chain = std::make_unique<PostChain>();
+  chain->sources.reserve(scene.post.size());
+  for (size_t i = 0; i < scene.post.size(); ++i) {
+    const ScenePostEffect& effect = scene.post[i];
+    SceneObject& source = chain->sources.emplace_back();
+    source.name = "image effect";
+    source.json_path = effect.json_path;
+    source.mesh = "quad";
+    source.material = effect.material;
+    Result<ShaderAsset*, std::string> shader = library.load(effect.material.shader);
+    if (!shader) {
+      return unexpected(error(fmt::format("{}: {}.shader: the shader does not compile:\n{}", scene.path,
+                                          effect.json_path, shader.error())));
+    }
+    size_t passes = (*shader)->passes.size();
+    if (size_t(effect.pass) >= passes) {
+      return unexpected(error(fmt::format("{}: {}.pass: the shader '{}' has {} pass{} (0..{})", scene.path,
+                                          effect.json_path, (*shader)->shader.name, passes, passes == 1 ? "" : "es",
+                                          passes ? passes - 1 : 0)));
+    }
+    ObjectState s;
+    s.index = i;
+    s.scene = &source;
+    s.shader = *shader;
+    Result<Material, MaterialError> material = make_material(s.shader->shader, effect.material, scene.path);
+    if (!material) return unexpected(error(material.error().message));
+    s.material = std::move(*material);
+    FACET_TRY(texel_sizes(s.material, resources, scene, effect));
+    s.material.uniforms.set_vector("_MainTex_TexelSize", 1.0f / float(width), 1.0f / float(height), float(width),
+                                   float(height));
+    s.mesh = quad;
+    s.draw = blit_uniforms();
+    chain->steps.push_back(std::move(s));
+  }
+  for (size_t i = 0; i < chain->steps.size(); ++i) {
+    size_t pass = size_t(scene.post[i].pass);
+    FACET_TRY(add_draw(context, scene, library, chain->steps[i], pass, none, {}, step_record(*chain, i, pass),
+                       chain->list));
+  }
+  return chain;
+}
+
+}  // namespace facet::runtime
