@@ -84,6 +84,7 @@ Result<void, std::string> build_layouts(GpuProgram& p) {
     if (!type) return unexpected(type.error());
     FACET_TRY(add(r.set, r.binding, *type, r.array_size, r.name));
   }
+  p.set_bindings = sets;
   for (uint32_t s = 0; s < kSetCount; ++s) {
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = uint32_t(sets[s].size());
@@ -130,6 +131,7 @@ Result<std::unique_ptr<GpuProgram>, std::string> create_program(const Context& c
       return unexpected(std::string("cannot create a shader module"));
     }
     p->modules.push_back(module);
+    p->spirv.push_back(words);
     p->stages.push_back(stage_bit_of(stage.stage));
     p->entries.push_back(stage.reflection.entry_point);
     const StageReflection& r = stage.reflection;
@@ -162,6 +164,17 @@ Result<std::unique_ptr<GpuProgram>, std::string> create_program(const Context& c
   return p;
 }
 
+std::vector<VkVertexInputAttributeDescription> vertex_attributes(const GpuProgram& program) {
+  std::vector<VkVertexInputAttributeDescription> attributes;
+  for (const StageVariable& input : program.vertex_inputs) {
+    if (input.semantic.rfind("SV_", 0) == 0 && input.semantic != "SV_POSITION") continue;
+    Attribute a = attribute_for(input);
+    uint32_t locations = std::max(1u, input.array_size);
+    for (uint32_t l = 0; l < locations; ++l) attributes.push_back({input.location + l, 0, a.format, a.offset});
+  }
+  return attributes;
+}
+
 Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram& program, const PipelineState& state,
                                              bool mirrored, VkRenderPass render_pass, VkPipelineCache cache,
                                              bool* created) {
@@ -185,13 +198,7 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
     stages.push_back(s);
   }
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  std::vector<VkVertexInputAttributeDescription> attributes;
-  for (const StageVariable& input : program.vertex_inputs) {
-    if (input.semantic.rfind("SV_", 0) == 0 && input.semantic != "SV_POSITION") continue;
-    Attribute a = attribute_for(input);
-    uint32_t locations = std::max(1u, input.array_size);
-    for (uint32_t l = 0; l < locations; ++l) attributes.push_back({input.location + l, 0, a.format, a.offset});
-  }
+  std::vector<VkVertexInputAttributeDescription> attributes = vertex_attributes(program);
   VkPipelineVertexInputStateCreateInfo vertex{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertex.vertexBindingDescriptionCount = 1;
   vertex.pVertexBindingDescriptions = &binding;

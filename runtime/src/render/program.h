@@ -27,8 +27,10 @@ struct GpuProgram {
   std::vector<VkShaderModule> modules;
   std::vector<VkShaderStageFlagBits> stages;
   std::vector<std::string> entries;
+  std::vector<std::vector<uint32_t>> spirv;  // per module, kept for frame captures
   std::array<VkDescriptorSetLayout, kSetCount> set_layouts{};
   std::array<bool, kSetCount> set_used{};
+  std::array<std::vector<VkDescriptorSetLayoutBinding>, kSetCount> set_bindings;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   std::vector<UniformBlock> blocks;         // every stage's blocks merged by (set, binding)
   std::vector<ResourceBinding> resources;   // likewise
@@ -45,6 +47,10 @@ struct GpuProgram {
 
 Result<std::unique_ptr<GpuProgram>, std::string> create_program(const Context& context, const package::Package& package,
                                                                const package::PackageVariant& variant);
+
+// The interleaved Vertex's attributes that feed the vertex stage's inputs
+// (binding 0), matched by semantic.
+std::vector<VkVertexInputAttributeDescription> vertex_attributes(const GpuProgram& program);
 
 // The pipeline for this state (created on first use, then reused).
 // `mirrored` flips the front face for objects with a negative scale.

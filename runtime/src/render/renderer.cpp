@@ -9,9 +9,12 @@
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/vulkan_context.h"
+#include "render/capture.h"
 #include "render/draw_list.h"
 #include "render/post.h"
 #include "render/resources.h"
@@ -23,6 +26,11 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 RenderError error(std::string message) { return RenderError{std::move(message)}; }
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
 
 // Vulkan objects of one frame, destroyed in reverse order.
 struct FrameObjects {
@@ -56,13 +64,17 @@ class UniformArena {
   };
   Result<Slice, RenderError> allocate(VkDeviceSize size) {
     size = std::max<VkDeviceSize>(size, 16);
-    if (chunks_.empty() || used_ + size > chunks_.back().size()) {
+    while (current_ < chunks_.size() && used_ + size > chunks_[current_].size()) {
+      ++current_;
+      used_ = 0;
+    }
+    if (current_ == chunks_.size()) {
       VkResultOf<Buffer> b = create_buffer(context_, std::max<VkDeviceSize>(size, 1 << 18), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       if (!b) return unexpected(error(describe(b.error())));
       chunks_.push_back(std::move(*b));
       used_ = 0;
     }
-    Buffer& chunk = chunks_.back();
+    Buffer& chunk = chunks_[current_];
     Slice s{chunk.handle(), used_, {static_cast<std::byte*>(chunk.data()) + used_, size_t(size)}};
     used_ = (used_ + size + align_ - 1) / align_ * align_;
     return s;
@@ -71,6 +83,7 @@ class UniformArena {
  private:
   const Context& context_;
   std::vector<Buffer> chunks_;
+  size_t current_ = 0;
   VkDeviceSize used_ = 0, align_ = 256;
 };
 
@@ -126,6 +139,68 @@ Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat dep
     return unexpected(error("cannot create the render pass: " + vk_result_name(r)));
   }
   return pass;
+}
+
+// One command buffer and fence, reused by every frame.
+struct Submitter {
+  const Context* context = nullptr;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer commands = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+  Submitter() = default;
+  Submitter(Submitter&& o) noexcept { *this = std::move(o); }
+  Submitter& operator=(Submitter&& o) noexcept {
+    std::swap(context, o.context);
+    std::swap(pool, o.pool);
+    std::swap(commands, o.commands);
+    std::swap(fence, o.fence);
+    return *this;
+  }
+  ~Submitter() {
+    if (!context) return;
+    if (fence) vkDestroyFence(context->device(), fence, nullptr);
+    if (pool) vkDestroyCommandPool(context->device(), pool, nullptr);
+  }
+  VkResultOf<void> submit(const std::function<void(VkCommandBuffer)>& record) {
+    VkDevice device = context->device();
+    vkResetCommandBuffer(commands, 0);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(commands, &begin);
+    record(commands);
+    VkResult r = vkEndCommandBuffer(commands);
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    if (r == VK_SUCCESS) r = vkQueueSubmit(context->queue(), 1, &submit, fence);
+    if (r == VK_SUCCESS) r = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    if (r == VK_SUCCESS) r = vkResetFences(device, 1, &fence);
+    if (r != VK_SUCCESS) return vk_failure(VkErrorCode::submit_failed, "recording, submitting or waiting failed", r);
+    return {};
+  }
+};
+
+Result<Submitter, RenderError> make_submitter(const Context& context) {
+  Submitter s;
+  s.context = &context;
+  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.queueFamilyIndex = context.queue_family();
+  if (VkResult r = vkCreateCommandPool(context.device(), &pool, nullptr, &s.pool); r != VK_SUCCESS) {
+    return unexpected(error("cannot create a command pool: " + vk_result_name(r)));
+  }
+  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocate.commandPool = s.pool;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  if (VkResult r = vkAllocateCommandBuffers(context.device(), &allocate, &s.commands); r != VK_SUCCESS) {
+    return unexpected(error("cannot allocate a command buffer: " + vk_result_name(r)));
+  }
+  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  if (VkResult r = vkCreateFence(context.device(), &fence, nullptr, &s.fence); r != VK_SUCCESS) {
+    return unexpected(error("cannot create a fence: " + vk_result_name(r)));
+  }
+  return s;
 }
 
 // The image-effect chain's two ping-pong images, its colour-only render pass
@@ -299,6 +374,30 @@ struct Recorder {
   VkDescriptorPool pool;
   std::map<std::string, const Image*> overrides;  // by resource name: the chain's _MainTex and depth
   VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
+  CaptureBuilder* capture = nullptr;
+  // What the first frame allocated and wrote for each draw; later frames
+  // only refill the uniform bytes in place (the previous frame has finished)
+  // and bind the same sets.
+  struct Retained {
+    std::array<VkDescriptorSet, kSetCount> sets{};
+    std::vector<std::pair<const UniformBlock*, std::span<std::byte>>> blocks;
+  };
+  std::map<const Draw*, Retained> retained;
+
+  void push_zeros(VkCommandBuffer commands, const GpuProgram& program) {
+    if (!program.push_constant_bytes) return;
+    std::vector<std::byte> zeros(program.push_constant_bytes);
+    vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
+  }
+
+  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r, const UniformLayers& layers) {
+    for (const auto& [block, bytes] : r.blocks) fill_block(bytes, *block, layers);
+    for (uint32_t set = 0; set < kSetCount; ++set) {
+      if (!r.sets[set]) continue;
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &r.sets[set], 0, nullptr);
+    }
+    push_zeros(commands, program);
+  }
 
   Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object) {
     if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
@@ -315,10 +414,16 @@ struct Recorder {
     return *f;
   }
 
+  // `captured`: where the descriptors' contents go when capturing the frame.
   Result<void, RenderError> bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
-                                 const UniformValues& frame) {
+                                 const UniformValues& frame, CapturedDraw* captured = nullptr) {
     GpuProgram& program = *draw.variant->program;
     UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
+    if (auto it = retained.find(&draw); it != retained.end()) {
+      rebind(commands, program, it->second, layers);
+      return {};
+    }
+    Retained& kept = retained[&draw];
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!program.set_used[set]) continue;
       VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -339,6 +444,12 @@ struct Recorder {
         Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
         if (!slice) return unexpected(slice.error());
         fill_block(slice->bytes.subspan(0, block.size), block, layers);
+        kept.blocks.emplace_back(&block, slice->bytes.subspan(0, block.size));
+        if (captured) {
+          std::span<const std::byte> filled = slice->bytes.subspan(0, block.size);
+          captured->descriptors.push_back({set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                                           std::vector<std::byte>(filled.begin(), filled.end())});
+        }
         buffers.push_back({slice->buffer, slice->offset, std::max<VkDeviceSize>(block.size, 16)});
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = ds;
@@ -353,9 +464,15 @@ struct Recorder {
         VkDescriptorImageInfo info{};
         info.sampler = resources.sampler();
         VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
+        CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
         if (r.kind != ResourceKind::separate_sampler) {
           Result<const Image*, RenderError> image = image_for(r, object);
           if (!image) return unexpected(image.error());
+          if (captured) {
+            Result<int, std::string> index = capture->image(*image);
+            if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
+            described.image = *index;
+          }
           if (is_depth_format((*image)->desc().format) && point_sampler) info.sampler = point_sampler;
           info.imageView = (*image)->view();
           info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -363,6 +480,12 @@ struct Recorder {
                                                                 : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
         }
         images.emplace_back(std::max(1u, r.array_size), info);
+        if (captured) {
+          described.type = type;
+          described.sampler = info.sampler == point_sampler && point_sampler ? CapturedSampler::point_clamp
+                                                                             : CapturedSampler::trilinear_repeat;
+          captured->descriptors.push_back(std::move(described));
+        }
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = ds;
         w.dstBinding = r.binding;
@@ -373,11 +496,9 @@ struct Recorder {
       }
       vkUpdateDescriptorSets(context.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
       vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &ds, 0, nullptr);
+      kept.sets[set] = ds;
     }
-    if (program.push_constant_bytes) {
-      std::vector<std::byte> zeros(program.push_constant_bytes);
-      vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
-    }
+    push_zeros(commands, program);
     return {};
   }
 };
@@ -449,8 +570,13 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   RenderedFrame frame;
   frame.width = options.width ? options.width : scene.width;
   frame.height = options.height ? options.height : scene.height;
+  if (options.frames < 1) return unexpected(error("frames must be at least 1"));
+  if (options.capture && !scene.post.empty()) {
+    return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
+  }
   ShaderLibrary library(options.cache_dir);
   Resources resources(context);
+  resources.keep_pixels(options.capture != nullptr);
   Loader loader{context, scene, library, resources, {}};
   CameraMatrices camera = camera_matrices(scene.camera, frame.width, frame.height);
   UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
@@ -538,17 +664,33 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   fo.pool = *pool;
   UniformArena arena(context);
   Recorder recorder{context, resources, arena, fo.pool};
+  std::optional<CaptureBuilder> capture;
+  if (options.capture) {
+    *options.capture = FrameCapture{};
+    options.capture->width = uint32_t(frame.width);
+    options.capture->height = uint32_t(frame.height);
+    options.capture->depth_format = depth;
+    options.capture->vertex_stride = sizeof(Vertex);
+    capture.emplace(*options.capture, resources);
+  }
   VkDeviceSize bytes = VkDeviceSize(frame.width) * frame.height * 8;
   VkResultOf<Buffer> readback = create_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!readback) return unexpected(error(describe(readback.error())));
   std::optional<RenderError> failed;
   VkQueryPool queries = context.timestamp_pool();
-  VkResultOf<void> submitted = submit_and_wait(context, [&](VkCommandBuffer commands) {
+  // What every frame does: the frame uniforms and every draw's uniform bytes
+  // (descriptor sets are written by the first frame and kept), recording,
+  // submission and the wait.
+  Result<Submitter, RenderError> submitter_made = make_submitter(context);
+  if (!submitter_made) return unexpected(submitter_made.error());
+  Submitter& submitter = *submitter_made;
+  auto record = [&](VkCommandBuffer commands, bool capturing) {
     if (queries) {
       vkCmdResetQueryPool(commands, queries, 0, 2);
       vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
     }
     glm::vec3 clear = linear_color({scene.camera.clear_color[0], scene.camera.clear_color[1], scene.camera.clear_color[2]});
+    if (capturing) options.capture->clear_color = {clear.r, clear.g, clear.b, scene.camera.clear_color[3]};
     VkClearValue clears[2]{};
     clears[0].color = {{clear.r, clear.g, clear.b, scene.camera.clear_color[3]}};
     clears[1].depthStencil = {1.0f, 0};
@@ -567,10 +709,17 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
       const Draw& d = list->draws[i];
       const ObjectState& object = objects[d.object];
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[i]);
-      if (Result<void, RenderError> bound = recorder.bind(commands, d, object, frame_values); !bound) {
+      std::optional<CapturedDraw> captured;
+      if (capturing) {
+        captured = CapturedDraw{capture->program(*d.variant->program), capture->mesh(*object.mesh), d.state, object.mirrored};
+        recorder.capture = &*capture;
+      }
+      if (Result<void, RenderError> bound = recorder.bind(commands, d, object, frame_values, captured ? &*captured : nullptr);
+          !bound) {
         failed = bound.error();
         break;
       }
+      if (captured) options.capture->draws.push_back(std::move(*captured));
       VkBuffer vb = object.mesh->vertices.handle();
       VkDeviceSize offset = 0;
       vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
@@ -616,16 +765,23 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr, 0,
                          nullptr);
-  });
-  if (failed) return unexpected(*failed);
-  if (!submitted) return unexpected(error(describe(submitted.error())));
-  if (queries) {
+  };
+  for (int f = 0; f < options.frames; ++f) {
+    Clock::time_point frame_start = Clock::now();
+    frame.stats.triangles = 0;
+    if (f > 0) frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
+    VkResultOf<void> submitted = submitter.submit([&](VkCommandBuffer c) { record(c, f == 0 && capture); });
+    frame.stats.frame_ms.push_back(ms_since(frame_start));
+    if (failed) return unexpected(*failed);
+    if (!submitted) return unexpected(error(describe(submitted.error())));
     uint64_t stamps[2] = {0, 0};
-    if (vkGetQueryPoolResults(context.device(), queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
-                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
-      frame.stats.gpu_ms = double(stamps[1] - stamps[0]) * context.device_info().timestamp_period_ns / 1e6;
+    if (queries && vkGetQueryPoolResults(context.device(), queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
+                                         VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
+      frame.stats.frame_gpu_ms.push_back(double(stamps[1] - stamps[0]) * context.device_info().timestamp_period_ns / 1e6);
     }
+    if (options.after_frame) options.after_frame(f);
   }
+  if (!frame.stats.frame_gpu_ms.empty()) frame.stats.gpu_ms = median(frame.stats.frame_gpu_ms);
   finish_image(frame, static_cast<const std::byte*>(readback->data()), scene);
   for (Draw& d : list->draws) {
     frame.stats.additive_draws += d.record.additive;

@@ -93,7 +93,9 @@ Result<LoadedTexture, std::string> Resources::solid(const std::array<float, 4>& 
   std::vector<std::byte> bytes = encode(texels, format);
   VkResultOf<void> up = upload_image(context_, *image, {std::span<const std::byte>(bytes)});
   if (!up) return unexpected(describe(up.error()));
-  return LoadedTexture{std::move(*image), 1, 1};
+  LoadedTexture made{std::move(*image), 1, 1};
+  if (keep_pixels_) made.mips.push_back(std::move(bytes));
+  return made;
 }
 
 Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref) {
@@ -140,7 +142,9 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
   VkResultOf<void> up = upload_image(context_, *image, spans);
   if (!up) return unexpected(describe(up.error()));
   ++files_loaded_;
-  return LoadedTexture{std::move(*image), w, h};
+  LoadedTexture made{std::move(*image), w, h};
+  if (keep_pixels_) made.mips = std::move(mips);
+  return made;
 }
 
 Result<const LoadedTexture*, std::string> Resources::texture(const SceneTexture& ref) {
@@ -178,6 +182,16 @@ Result<const Image*, std::string> Resources::fallback(std::string_view dim, bool
   auto& slot = fallbacks_[key];
   slot = std::make_unique<LoadedTexture>(std::move(*made));
   return &slot->image;
+}
+
+const std::vector<std::vector<std::byte>>* Resources::pixels_of(const Image* image) const {
+  auto kept = [&](const LoadedTexture* t) { return t && &t->image == image && !t->mips.empty(); };
+  for (const auto& [key, t] : textures_)
+    if (kept(t.get())) return &t->mips;
+  for (const auto& [key, t] : fallbacks_)
+    if (kept(t.get())) return &t->mips;
+  if (kept(environment_.get())) return &environment_->mips;
+  return nullptr;
 }
 
 Result<const Image*, std::string> Resources::environment(const Vec3& c) {

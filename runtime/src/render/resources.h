@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "facet/result.h"
 #include "facet/runtime/image.h"
@@ -19,6 +20,7 @@ namespace facet::runtime {
 struct LoadedTexture {
   Image image;
   uint32_t width = 1, height = 1;
+  std::vector<std::vector<std::byte>> mips;  // the uploaded texels, kept only for frame captures
 };
 
 class Resources {
@@ -39,6 +41,11 @@ class Resources {
 
   size_t textures_loaded() const { return files_loaded_; }
 
+  // Keep the texels of textures made from now on, for pixels_of.
+  void keep_pixels(bool keep) { keep_pixels_ = keep; }
+  // The uploaded texels of an image made here (empty when not kept or not ours).
+  const std::vector<std::vector<std::byte>>* pixels_of(const Image* image) const;
+
  private:
   Result<LoadedTexture, std::string> solid(const std::array<float, 4>& rgba, VkImageViewType view, uint32_t layers,
                                            bool srgb);
@@ -50,6 +57,7 @@ class Resources {
   std::unique_ptr<LoadedTexture> environment_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   size_t files_loaded_ = 0;
+  bool keep_pixels_ = false;
 };
 
 }  // namespace facet::runtime

@@ -1,8 +1,9 @@
 // facet render scene.json -o out.png [--exr out.exr] [--width W --height H]
-//   [--device SEL] [--stats] [--explain] [--validation] [--cache DIR]
+//   [--device SEL] [--stats] [--frames N] [--explain] [--validation] [--cache DIR]
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <ostream>
 
 #include "facet/commands.h"
@@ -14,7 +15,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, png, exr, device, cache;
-  int width = 0, height = 0;
+  int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false;
 };
 
@@ -27,6 +28,15 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
                      "textures from files: {}\n",
                      f.stats.draws, f.stats.additive_draws, f.stats.triangles, f.stats.pipelines,
                      f.stats.variants_compiled, f.stats.shaders_loaded, f.stats.textures_loaded);
+  if (f.stats.frame_ms.size() > 1) {
+    std::vector<double> host = f.stats.frame_ms, gpu_frames = f.stats.frame_gpu_ms;
+    std::sort(host.begin(), host.end());
+    std::sort(gpu_frames.begin(), gpu_frames.end());
+    out << fmt::format("frames: {}, frame time median {:.3f} ms (min {:.3f}, max {:.3f})", host.size(),
+                       host[host.size() / 2], host.front(), host.back());
+    if (!gpu_frames.empty()) out << fmt::format(", GPU median {:.3f} ms", gpu_frames[gpu_frames.size() / 2]);
+    out << "\n";
+  }
   for (const std::string& v : f.compiled) out << "  compiled: " << v << "\n";
 }
 
@@ -45,7 +55,7 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << "facet render: " << runtime::describe(context.error()) << "\n";
     return 1;
   }
-  auto frame = runtime::render_scene(**context, *scene, {.width = a.width, .height = a.height, .cache_dir = a.cache});
+  auto frame = runtime::render_scene(**context, *scene, {.width = a.width, .height = a.height, .cache_dir = a.cache, .frames = a.frames});
   if (!frame) {
     err << frame.error().message << "\n";
     return 1;
@@ -84,6 +94,8 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_option("--device", a.device, "Vulkan device: index or name part (default: lavapipe)");
   app.add_option("--cache", a.cache, "compile cache folder");
   app.add_flag("--stats", a.stats, "print GPU time and counts");
+  app.add_option("--frames", a.frames, "render the frame N times after compiling once; --stats prints the median frame time")
+      ->check(CLI::Range(1, 100000));
   app.add_flag("--explain", a.explain, "list every draw with its pass, variant keywords and why");
   app.add_flag("--validation", a.validation, "enable the Vulkan validation layer; any message fails the run");
   try {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,9 +20,19 @@ namespace facet::runtime {
 
 class Context;
 
+struct FrameCapture;
+
 struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's size
   std::string cache_dir;      // the compiler's cache folder; empty: none
+  // Frames rendered after loading and compiling once, for timing: each
+  // rebuilds the frame uniforms, descriptor sets and uniform data of every
+  // draw, records, submits and waits. The image is the last frame's.
+  int frames = 1;
+  FrameCapture* capture = nullptr;  // filled from the first frame (facet/runtime/frame_capture.h)
+  // Called after each frame's wait, outside its timing: a benchmark runs
+  // its baseline here, so that the two alternate frame by frame.
+  std::function<void(int frame)> after_frame;
 };
 
 // One draw (or one pass that was not drawn), for --explain and tests.
@@ -49,7 +60,9 @@ struct RenderStats {
   uint64_t variants_compiled = 0;  // (pass, variant) pairs compiled
   uint64_t shaders_loaded = 0;
   uint64_t textures_loaded = 0;    // from files
-  std::optional<double> gpu_ms;    // the frame's GPU time from timestamps
+  std::optional<double> gpu_ms;    // the frame's GPU time from timestamps (the median over frames)
+  std::vector<double> frame_ms;     // per frame: host time from the first uniform to the fence
+  std::vector<double> frame_gpu_ms; // per frame, from timestamps
   double compile_ms = 0;           // loading and compiling shaders
   double total_ms = 0;
 };
