@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
-  libglm-dev libopenimageio-dev openimageio-tools nlohmann-json3-dev libcli11-dev libfmt-dev
+  libglm-dev libopenimageio-dev libpng-dev openimageio-tools nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxxhash-dev libzstd-dev
   libtbb-dev libtinyobjloader-dev clang-14 libclang-rt-14-dev libcurl4-openssl-dev libssl-dev glslc
   chromium

@@ -1,13 +1,16 @@
 // Light attenuation and shadow macros for ForwardBase/ForwardAdd
-// vertex/fragment programs. Shadows are not implemented yet: the shadow
-// macros declare nothing and SHADOW_ATTENUATION is 1 for every SHADOWS_*
-// keyword. Attenuation follows POINT/SPOT/DIRECTIONAL (FacetLight.hlsl).
+// vertex/fragment programs. Shadows: SHADOWS_SCREEN (directional lights)
+// and SHADOWS_DEPTH (spot lights) sample the light's shadow map through a
+// light-space coordinate (FacetShadow.hlsl), as Unity does where it has no
+// screen-space shadows; SHADOWS_CUBE (point lights) is not rendered and
+// gives 1. Attenuation follows POINT/SPOT/DIRECTIONAL (FacetLight.hlsl).
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
 
 #include "HLSLSupport.cginc"
 #include "UnityShaderVariables.cginc"
 #include "FacetLight.hlsl"
+#include "FacetShadow.hlsl"
 
 #define UNITY_ATTEN_CHANNEL r
 
@@ -21,17 +24,29 @@
 #define UNITY_SAMPLE_SHADOW(tex, coord) (tex2D(tex, (coord).xy).r >= (coord).z ? 1.0 : 0.0)
 #define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, (coord).xyz / (coord).w)
 
-// ---- shadows (not implemented: fully lit) ------------------------------------
-// The same expansion for every SHADOWS_* keyword (SHADOWS_SCREEN,
-// SHADOWS_DEPTH, SHADOWS_CUBE, SHADOWS_SOFT, ...) and without one.
+// ---- shadows ------------------------------------------------------------------------
+// SHADOW_COORDS adds the light-space coordinate; TRANSFER_SHADOW fills it from
+// `v.vertex` (the vertex input must be called v, as in Unity). The
+// UNITY_SHADOW_ATTENUATION form computes the coordinate from the world
+// position in the fragment stage, so it also works without the interpolator.
+#if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
+#define SHADOW_COORDS(idx1) float4 _ShadowCoord : TEXCOORD##idx1;
+#define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
+#define TRANSFER_SHADOW(a) a._ShadowCoord = FacetShadowCoord(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz);
+#define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
+#define SHADOW_ATTENUATION(a) FacetSampleShadow(a._ShadowCoord)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) FacetSampleShadow(FacetShadowCoord(worldPos))
+#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = FacetShadowCoord(wpos);
+#else
 #define SHADOW_COORDS(idx1)
 #define UNITY_SHADOW_COORDS(idx1)
 #define TRANSFER_SHADOW(a)
 #define UNITY_TRANSFER_SHADOW(a, coord)
 #define SHADOW_ATTENUATION(a) 1.0
 #define UNITY_SHADOW_ATTENUATION(a, worldPos) 1.0
-#define UNITY_SHADOW_W(_w) _w
 #define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos)
+#endif
+#define UNITY_SHADOW_W(_w) _w
 
 // ---- light coordinates ----------------------------------------------------------
 // LIGHTING_COORDS(idx1, idx2) adds the interpolators (light space position in
@@ -54,6 +69,6 @@
 
 // Attenuation at a world position times shadowing, computed in the fragment stage.
 #define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) \
-    float destName = FacetLightAttenuation(worldPos) * SHADOW_ATTENUATION(input)
+    float destName = FacetLightAttenuation(worldPos) * UNITY_SHADOW_ATTENUATION(input, worldPos)
 
 #endif // AUTOLIGHT_INCLUDED

@@ -108,4 +108,24 @@ std::vector<std::string> fill_block(std::span<std::byte> out, const UniformBlock
   return missing;
 }
 
+std::vector<size_t> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer) {
+  std::vector<size_t> out;
+  for (size_t m = 0; m < block.members.size(); ++m) {
+    for (size_t l = 0; l < layers.size(); ++l) {
+      if (!layers[l] || !layers[l]->find(block.members[m].name)) continue;
+      if (l == layer) out.push_back(m);
+      break;
+    }
+  }
+  return out;
+}
+
+void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<size_t>& members,
+                    const UniformValues& values) {
+  for (size_t m : members) {
+    const BlockMember& member = block.members[m];
+    if (const std::vector<float>* value = values.find(member.name)) write_member(out, member, *value);
+  }
+}
+
 }  // namespace facet::runtime

@@ -8,19 +8,36 @@
 #include "facet/variants.h"
 
 namespace facet::runtime {
-namespace {
 
 bool iequals(std::string_view a, std::string_view b) {
   return a.size() == b.size() &&
          std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
 }
 
-std::string light_name(const Scene& scene, size_t i) {
+std::string light_description(const Scene& scene, size_t i) {
   const char* type = scene.lights[i].type == LightType::directional ? "directional"
                      : scene.lights[i].type == LightType::point     ? "point"
                                                                     : "spot";
   return fmt::format("{} ({})", scene.lights[i].json_path, type);
 }
+
+DrawRecord pass_record(const ObjectState& object, size_t p) {
+  const ir::Pass& pass = *object.shader->passes[p].ir;
+  DrawRecord record;
+  record.object = object.scene->name.empty() ? object.scene->json_path
+                                             : fmt::format("{} ({})", object.scene->json_path, object.scene->name);
+  record.object_index = object.index;
+  record.shader = object.shader->shader.name;
+  record.pass = pass.name.empty() ? std::to_string(object.shader->passes[p].pass)
+                                  : fmt::format("{} {}", object.shader->passes[p].pass, pass.name);
+  record.light_mode = pass.tag("LightMode");
+  record.queue = object.queue;
+  return record;
+}
+
+namespace {
+
+std::string light_name(const Scene& scene, size_t i) { return light_description(scene, i); }
 
 std::vector<std::string> fog_keywords(const Scene& scene) {
   switch (scene.fog.mode) {
@@ -113,15 +130,7 @@ struct Builder {
     std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       const ir::Pass& pass = *object.shader->passes[p].ir;
-      DrawRecord record;
-      record.object = object.scene->name.empty() ? object.scene->json_path
-                                                 : fmt::format("{} ({})", object.scene->json_path, object.scene->name);
-      record.object_index = object.index;
-      record.shader = object.shader->shader.name;
-      record.pass = pass.name.empty() ? std::to_string(object.shader->passes[p].pass)
-                                      : fmt::format("{} {}", object.shader->passes[p].pass, pass.name);
-      record.light_mode = pass.tag("LightMode");
-      record.queue = object.queue;
+      DrawRecord record = pass_record(object, p);
       std::string why;
       Role role = role_of(pass, why);
       if (role == Role::skip) {

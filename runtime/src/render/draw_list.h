@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "facet/runtime/material.h"
@@ -48,6 +49,12 @@ struct Draw {
   PipelineState state;
   DrawRecord record;
 };
+
+bool iequals(std::string_view a, std::string_view b);
+// "lights[1] (point)"
+std::string light_description(const Scene& scene, size_t light);
+// A record of pass `pass` of `object` with the object, shader, pass, LightMode and queue filled.
+DrawRecord pass_record(const ObjectState& object, size_t pass);
 
 struct LightSetup {
   std::vector<LightValues> lights;  // one per scene light

@@ -42,9 +42,14 @@ glm::mat4 transform_matrix(const Transform& t) {
 }
 
 CameraMatrices camera_matrices(const SceneCamera& camera, int width, int height) {
+  glm::mat4 to_world = glm::translate(glm::mat4(1), v3(camera.transform.position)) * rotation_matrix(camera.transform);
+  return camera_matrices_at(to_world, camera, width, height);
+}
+
+CameraMatrices camera_matrices_at(const glm::mat4& camera_to_world, const SceneCamera& camera, int width, int height) {
   CameraMatrices m;
-  m.position = v3(camera.transform.position);
-  m.camera_to_world = glm::translate(glm::mat4(1), m.position) * rotation_matrix(camera.transform);
+  m.position = glm::vec3(camera_to_world[3]);
+  m.camera_to_world = camera_to_world;
   m.world_to_camera = glm::inverse(m.camera_to_world);
   m.view = glm::scale(glm::mat4(1), {1, 1, -1}) * m.world_to_camera;
   float aspect = float(width) / float(height);

@@ -24,6 +24,9 @@ struct CameraMatrices {
 };
 
 CameraMatrices camera_matrices(const SceneCamera& camera, int width, int height);
+// The same for a camera placed by a matrix (the lens fields of `lens` used),
+// as a light's shadow camera is.
+CameraMatrices camera_matrices_at(const glm::mat4& camera_to_world, const SceneCamera& lens, int width, int height);
 
 glm::vec3 linear_color(const Vec3& srgb);
 

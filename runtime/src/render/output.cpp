@@ -1,29 +1,25 @@
-// PNG and EXR files through OpenImageIO, and the --explain listing.
-#include <OpenImageIO/imageio.h>
+// PNG and EXR files through image_io, written atomically, and the --explain listing.
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <filesystem>
 
 #include "facet/runtime/renderer.h"
+#include "image_io/image_io.h"
 
 namespace facet::runtime {
 namespace {
 
-// OpenImageIO picks the format by extension, so the temporary file keeps it.
-Result<void, RenderError> write_atomically(const std::string& path, const RenderedFrame& frame, OIIO::TypeDesc type,
-                                           const void* pixels) {
+// The writer picks the format by extension, so the temporary file keeps it.
+template <typename Pixel>
+Result<void, RenderError> write_atomically(const std::string& path, const RenderedFrame& frame, const Pixel* pixels) {
   std::filesystem::path target(path);
   std::filesystem::path temp = target.parent_path() /
                                fmt::format(".{}.tmp{}{}", target.stem().string(), getpid(), target.extension().string());
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return unexpected(RenderError{fmt::format("{}: no image writer for this extension", path)});
-  OIIO::ImageSpec spec(frame.width, frame.height, 4, type);
-  if (!out->open(temp.string(), spec) || !out->write_image(type, pixels) || !out->close()) {
-    std::string why = out->geterror();
+  if (Result<void, std::string> written = write_image_file(temp.string(), frame.width, frame.height, pixels); !written) {
     std::error_code ec;
     std::filesystem::remove(temp, ec);
-    return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, why)});
+    return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, written.error())});
   }
   std::error_code ec;
   std::filesystem::rename(temp, target, ec);
@@ -43,11 +39,11 @@ std::string join(const std::vector<std::string>& words) {
 }  // namespace
 
 Result<void, RenderError> write_png(const RenderedFrame& frame, const std::string& path) {
-  return write_atomically(path, frame, OIIO::TypeDesc::UINT8, frame.ldr.data());
+  return write_atomically(path, frame, frame.ldr.data());
 }
 
 Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::string& path) {
-  return write_atomically(path, frame, OIIO::TypeDesc::FLOAT, frame.hdr.data());
+  return write_atomically(path, frame, frame.hdr.data());
 }
 
 std::string explain_text(const RenderedFrame& frame) {

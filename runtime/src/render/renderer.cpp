@@ -375,13 +375,20 @@ struct Recorder {
   std::map<std::string, const Image*> overrides;  // by resource name: the chain's _MainTex and depth
   VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
   CaptureBuilder* capture = nullptr;
-  // What the first frame allocated and wrote for each draw; later frames
-  // only refill the uniform bytes in place (the previous frame has finished)
-  // and bind the same sets.
+  // What the first frame allocated and wrote for each draw. Later frames
+  // bind the same sets and rewrite in place (the previous frame has
+  // finished) the members that come from the frame layer, which is rebuilt
+  // every frame; the object's, light's and material's values stay as written.
+  struct KeptBlock {
+    const UniformBlock* block;
+    std::span<std::byte> bytes;
+    std::vector<size_t> frame_members;
+  };
   struct Retained {
     std::array<VkDescriptorSet, kSetCount> sets{};
-    std::vector<std::pair<const UniformBlock*, std::span<std::byte>>> blocks;
+    std::vector<KeptBlock> blocks;
   };
+  static constexpr size_t kFrameLayer = 3;  // in the layers of bind()
   std::map<const Draw*, Retained> retained;
 
   void push_zeros(VkCommandBuffer commands, const GpuProgram& program) {
@@ -390,8 +397,8 @@ struct Recorder {
     vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
   }
 
-  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r, const UniformLayers& layers) {
-    for (const auto& [block, bytes] : r.blocks) fill_block(bytes, *block, layers);
+  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r, const UniformValues& frame) {
+    for (const KeptBlock& k : r.blocks) refill_members(k.bytes, *k.block, k.frame_members, frame);
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!r.sets[set]) continue;
       vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &r.sets[set], 0, nullptr);
@@ -418,11 +425,11 @@ struct Recorder {
   Result<void, RenderError> bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
                                  const UniformValues& frame, CapturedDraw* captured = nullptr) {
     GpuProgram& program = *draw.variant->program;
-    UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
     if (auto it = retained.find(&draw); it != retained.end()) {
-      rebind(commands, program, it->second, layers);
+      rebind(commands, program, it->second, frame);
       return {};
     }
+    UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
     Retained& kept = retained[&draw];
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!program.set_used[set]) continue;
@@ -444,7 +451,7 @@ struct Recorder {
         Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
         if (!slice) return unexpected(slice.error());
         fill_block(slice->bytes.subspan(0, block.size), block, layers);
-        kept.blocks.emplace_back(&block, slice->bytes.subspan(0, block.size));
+        kept.blocks.push_back({&block, slice->bytes.subspan(0, block.size), members_from_layer(block, layers, kFrameLayer)});
         if (captured) {
           std::span<const std::byte> filled = slice->bytes.subspan(0, block.size);
           captured->descriptors.push_back({set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,

@@ -1,6 +1,5 @@
 #include "render/resources.h"
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,6 +8,7 @@
 
 #include "facet/runtime/material.h"
 #include "facet/runtime/vulkan_context.h"
+#include "image_io/image_io.h"
 
 namespace facet::runtime {
 namespace {
@@ -99,17 +99,12 @@ Result<LoadedTexture, std::string> Resources::solid(const std::array<float, 4>& 
 }
 
 Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref) {
-  auto input = OIIO::ImageInput::open(ref.name);
-  if (!input) return unexpected(fmt::format("{}: cannot read the image ({})", ref.name, OIIO::geterror()));
-  const OIIO::ImageSpec& spec = input->spec();
-  uint32_t w = uint32_t(spec.width), h = uint32_t(spec.height);
-  int channels = spec.nchannels;
-  if (w == 0 || h == 0 || channels < 1) return unexpected(fmt::format("{}: empty image", ref.name));
-  bool hdr = spec.format.is_floating_point();
-  std::vector<float> raw(size_t(w) * h * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data())) {
-    return unexpected(fmt::format("{}: cannot read the pixels ({})", ref.name, input->geterror()));
-  }
+  Result<DecodedImage, std::string> decoded = read_image_file(ref.name);
+  if (!decoded) return unexpected(fmt::format("{}: {}", ref.name, decoded.error()));
+  uint32_t w = decoded->width, h = decoded->height;
+  int channels = decoded->channels;
+  bool hdr = decoded->floating;
+  const std::vector<float>& raw = decoded->pixels;
   // RGBA, rows flipped: uv (0, 0) is the image's bottom-left corner, as in Unity.
   std::vector<float> linear(size_t(w) * h * 4);
   bool decode = ref.srgb && !hdr;

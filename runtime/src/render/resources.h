@@ -1,5 +1,5 @@
 // GPU textures and samplers of a frame: the built-in textures, files read
-// through OpenImageIO (cached by path and colour space), fallback images for
+// through image_io (OpenImageIO) (cached by path and colour space), fallback images for
 // every dimension, and the environment cube that stands in for a reflection
 // probe (the flat ambient colour).
 #pragma once

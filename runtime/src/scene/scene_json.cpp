@@ -141,9 +141,24 @@ struct Reader {
     return c;
   }
 
+  static void shadow_settings(const json& j, const std::string& path, SceneLight& l) {
+    if (j.contains("shadows")) {
+      l.shadows = word<ShadowMode>(member(j, "shadows"), join(path, "shadows"),
+                                   {{"none", ShadowMode::none}, {"hard", ShadowMode::hard}, {"soft", ShadowMode::soft}});
+    }
+    auto fraction = [&](const char* key, float& out, float max) {
+      if (!j.contains(key)) return;
+      out = number(member(j, key), join(path, key));
+      if (out < 0 || out > max) throw Bad{join(path, key), fmt::format("expected a number from 0 to {}", max)};
+    };
+    fraction("shadow_strength", l.shadow_strength, 1);
+    fraction("shadow_bias", l.shadow_bias, 10);
+    fraction("shadow_normal_bias", l.shadow_normal_bias, 10);
+  }
+
   SceneLight light(const json& j, const std::string& path) const {
     check_keys(j, path, {"type", "position", "rotation", "look_at", "color", "intensity", "range", "spot_angle",
-                         "inner_spot_angle"});
+                         "inner_spot_angle", "shadows", "shadow_strength", "shadow_bias", "shadow_normal_bias"});
     SceneLight l;
     l.json_path = path;
     if (!j.contains("type")) throw Bad{path, "missing key 'type' (directional, point or spot)"};
@@ -171,6 +186,7 @@ struct Reader {
         throw Bad{join(path, "inner_spot_angle"), "expected an angle from 0 to spot_angle"};
       }
     }
+    shadow_settings(j, path, l);
     return l;
   }
 
@@ -303,7 +319,7 @@ struct Reader {
 
   Scene scene(const json& j) const {
     check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
-                       "pixel_light_count", "post"});
+                       "pixel_light_count", "post", "shadow_resolution", "shadow_distance"});
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
@@ -329,6 +345,10 @@ struct Reader {
                                 {{"none", Tonemap::none}, {"reinhard", Tonemap::reinhard}, {"aces", Tonemap::aces}});
     }
     if (j.contains("pixel_light_count")) s.pixel_light_count = integer(member(j, "pixel_light_count"), "pixel_light_count", 0, 64);
+    if (j.contains("shadow_resolution")) {
+      s.shadow_resolution = integer(member(j, "shadow_resolution"), "shadow_resolution", 16, 8192);
+    }
+    if (j.contains("shadow_distance")) s.shadow_distance = positive(member(j, "shadow_distance"), "shadow_distance");
     if (j.contains("post")) {
       const json& post = member(j, "post");
       if (!post.is_array()) throw Bad{"post", "expected a list of image effects"};

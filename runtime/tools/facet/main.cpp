@@ -15,8 +15,10 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"render", "render a JSON scene to PNG/EXR (facet render scene.json -o out.png)", facet::tool::render_command},
+#ifndef FACET_NO_BRDF_TOOL  // the PNG-only build (FACET_IMAGE_IO=png) has no BRDF Explorer
     {"brdf", "BRDF Explorer views: lit-sphere, polar, slice, albedo (facet brdf ggx:roughness=0.3 --view polar -o p.svg)",
      facet::tool::brdf_command},
+#endif
     {"bench", "the accuracy-versus-cost study (facet bench accuracy --out report.html)", facet::tool::bench_command},
 };
 

@@ -49,6 +49,9 @@ struct SceneCamera {
 
 enum class LightType { directional, point, spot };
 
+// Unity's LightShadows: soft adds SHADOWS_SOFT (3x3 percentage-closer filtering).
+enum class ShadowMode { none, hard, soft };
+
 struct SceneLight {
   LightType type = LightType::directional;
   std::string json_path;    // "lights[1]"
@@ -58,6 +61,10 @@ struct SceneLight {
   float range = 10;         // point and spot
   float spot_angle = 30;    // full cone, degrees
   float inner_spot_angle = 21.8f;
+  ShadowMode shadows = ShadowMode::none;  // directional and spot lights (point lights: not rendered)
+  float shadow_strength = 1;              // 0..1: how dark the shadow is
+  float shadow_bias = 1;                  // depth bias, in shadow-map texels (their world size)
+  float shadow_normal_bias = 0.4f;        // casters shrunk along their normals, in texels
 };
 
 enum class FogMode { off, linear, exp, exp2 };
@@ -123,6 +130,8 @@ struct Scene {
   SceneFog fog;
   Tonemap tonemap = Tonemap::none;
   int pixel_light_count = 4;        // Unity's default pixel light limit
+  int shadow_resolution = 1024;     // texels per side of each shadow map
+  float shadow_distance = 50;       // directional shadows cover what lies this close to the camera
   std::vector<ScenePostEffect> post;  // image effects, in order, before tone mapping
 };
 

@@ -37,6 +37,13 @@ using UniformLayers = std::vector<const UniformValues*>;
 // struct members are left 0. Returns the members that nothing filled.
 std::vector<std::string> fill_block(std::span<std::byte> out, const UniformBlock& block, const UniformLayers& layers);
 
+// The members (indices into block.members) whose value comes from
+// layers[layer], the first layer that has them; and rewriting just those from
+// `values`: a renderer refills the per-frame members of a kept block this way.
+std::vector<size_t> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer);
+void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<size_t>& members,
+                    const UniformValues& values);
+
 // One member's bytes from one value (exposed for tests).
 void write_member(std::span<std::byte> out, const BlockMember& member, const std::vector<float>& value);
 

@@ -1,0 +1,68 @@
+// The PNG-only image I/O (-DFACET_IMAGE_IO=png) through libpng's simplified API.
+#include <fmt/format.h>
+#include <png.h>
+
+#include <filesystem>
+
+#include "image_io/image_io.h"
+
+namespace facet::runtime {
+namespace {
+
+bool is_png(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
+}  // namespace
+
+Result<DecodedImage, std::string> read_image_file(const std::string& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+    std::string why = png.message;
+    png_image_free(&png);
+    return unexpected(fmt::format("cannot read the image ({}; this build reads PNG files only)", why));
+  }
+  // 8-bit RGBA whatever the file holds; libpng converts 16-bit files (which
+  // it takes to be linear) to sRGB-encoded 8 bits on the way.
+  png.format = PNG_FORMAT_RGBA;
+  DecodedImage image{png.width, png.height, 4, false};
+  if (image.width == 0 || image.height == 0) {
+    png_image_free(&png);
+    return unexpected(std::string("empty image"));
+  }
+  std::vector<png_byte> bytes(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
+    std::string why = png.message;
+    png_image_free(&png);
+    return unexpected(fmt::format("cannot read the pixels ({})", why));
+  }
+  image.pixels.resize(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) image.pixels[i] = float(bytes[i]) / 255.0f;
+  return image;
+}
+
+Result<void, std::string> write_image_file(const std::string& path, int width, int height, const uint8_t* rgba8) {
+  if (!is_png(path)) return unexpected(std::string("this build writes PNG files only (-DFACET_IMAGE_IO=png)"));
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = png_uint_32(width);
+  png.height = png_uint_32(height);
+  png.format = PNG_FORMAT_RGBA;
+  if (!png_image_write_to_file(&png, path.c_str(), 0, rgba8, 0, nullptr)) {
+    std::string why = png.message;
+    png_image_free(&png);
+    return unexpected(why);
+  }
+  return {};
+}
+
+Result<void, std::string> write_image_file(const std::string&, int, int, const float*) {
+  return unexpected(std::string("EXR output needs OpenImageIO (this build has libpng only)"));
+}
+
+std::string image_io_name() { return "libpng " PNG_LIBPNG_VER_STRING " (PNG only)"; }
+
+}  // namespace facet::runtime

@@ -1,0 +1,53 @@
+// Shadow maps, as Unity's forward path without screen-space shadows: a
+// shadowed directional light (ForwardBase, SHADOWS_SCREEN) or spot light
+// (ForwardAdd, SHADOWS_DEPTH) gets a depth map rendered from the light by
+// the ShadowCaster passes of the objects around it; receivers sample it
+// through unity_WorldToShadow[0] (stdlib/FacetShadow.hlsl). A map is made
+// only for a light whose receivers' variants actually sample it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "facet/runtime/scene.h"
+#include "render/draw_list.h"
+#include "render/frame_values.h"
+
+namespace facet::runtime {
+
+// The light's shadow camera and what receivers and casters read of it.
+struct ShadowView {
+  size_t light = 0;             // into scene.lights
+  CameraMatrices camera;        // the light as a camera (facet's conventions)
+  SceneCamera lens;             // its projection, for the casters' frame uniforms
+  glm::mat4 world_to_shadow{1}; // world -> (u, v, depth, w)
+  float texel_world = 0;        // world size of one texel (at half the range for a spot)
+  glm::vec4 caster_bias{0};     // unity_LightShadowBias
+};
+
+// Where `light` (directional or spot, shadows on) looks from, fitted for a
+// directional light to the bounds of the objects within the shadow distance.
+std::optional<ShadowView> shadow_view(const Scene& scene, size_t light, const std::vector<ObjectState>& objects,
+                                      const glm::vec3& camera_position);
+
+// Adds the receivers' values (unity_WorldToShadow[0], _LightShadowData,
+// _ShadowMapTexture_TexelSize) and the casters' unity_LightShadowBias.
+void add_shadow_values(LightValues& light, const SceneLight& scene_light, const ShadowView& view, int resolution);
+
+// Whether a variant with these keywords samples the light's shadow map.
+bool samples_shadow_map(const std::vector<std::string>& keywords);
+
+// The shadow keywords a pass with this light asks for ({} without shadows).
+std::vector<std::string> shadow_keywords(const SceneLight& light, bool additive);
+
+// The ShadowCaster draws of `objects` into the map of `view`: every object
+// whose shader has a ShadowCaster pass and whose bounds reach the light's
+// view; skipped casters (no such pass) are listed in out.skipped.
+Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
+                                                      std::vector<ObjectState>& objects, const LightValues& light,
+                                                      const ShadowView& view, ShaderLibrary& library);
+
+}  // namespace facet::runtime

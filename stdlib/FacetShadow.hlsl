@@ -1,0 +1,41 @@
+// Shadow-map lookups of the pass's light, as Unity's forward path without
+// screen-space shadows (UNITY_NO_SCREENSPACE_SHADOWS): the runtime renders
+// the light's ShadowCaster depth into _ShadowMapTexture and fills
+//   unity_WorldToShadow[0]: world -> (u, v, depth, w) of that map, depth 0..1
+//     from the light, not reversed (w = 1 for a directional light);
+//   _LightShadowData.x: 1 - shadow strength (the shadowed value);
+//   _ShadowMapTexture_TexelSize: (1/size, 1/size, size, size).
+// SHADOWS_SOFT filters 3x3 comparisons (percentage-closer filtering).
+#ifndef FACET_SHADOW_INCLUDED
+#define FACET_SHADOW_INCLUDED
+
+#include "FacetBuiltins.hlsl"
+
+// 1 where the map's depth is not nearer to the light than `depth`, else 0.
+float FacetShadowCompare(float2 uv, float depth)
+{
+    return tex2Dlod(_ShadowMapTexture, float4(uv, 0.0, 0.0)).r >= depth ? 1.0 : 0.0;
+}
+
+// The light's visibility at a shadow coordinate: 1 lit, _LightShadowData.x
+// fully shadowed; outside the map, and beyond its far plane, lit.
+float FacetSampleShadow(float4 shadowCoord)
+{
+    float3 c = shadowCoord.xyz / max(shadowCoord.w, 1e-6);
+    if (shadowCoord.w <= 0.0 || any(c.xy < 0.0) || any(c.xy > 1.0) || c.z > 1.0) return 1.0;
+#if defined(SHADOWS_SOFT)
+    float lit = 0.0;
+    float2 texel = _ShadowMapTexture_TexelSize.xy;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            lit += FacetShadowCompare(c.xy + float2(x, y) * texel, c.z);
+    lit /= 9.0;
+#else
+    float lit = FacetShadowCompare(c.xy, c.z);
+#endif
+    return lerp(_LightShadowData.x, 1.0, lit);
+}
+
+float4 FacetShadowCoord(float3 worldPos) { return mul(unity_WorldToShadow[0], float4(worldPos, 1.0)); }
+
+#endif // FACET_SHADOW_INCLUDED
