@@ -126,6 +126,20 @@ TEST_F(SkyCookieTest, DirectionalLightWithoutCookieCompilesNoDirectionalCookieVa
   for (const std::string& c : f.compiled) EXPECT_EQ(c.find("DIRECTIONAL_COOKIE"), std::string::npos) << c;
 }
 
+TEST_F(SkyCookieTest, CookieFileThatIsNotAnImageFailsNamingTheLightsCookie) {
+  std::string path = (test_support::test_dir() / "not_an_image.png").string();
+  std::ofstream(path) << "not a png";
+  std::string json = floor_scene(R"([{"type": "spot", "position": [0, 2, 0], "rotation": [90, 0, 0], "cookie": ")" +
+                                     path + "\"}]",
+                                 kTopCamera);
+  auto scene = parse_scene(json, write_scene("bad_cookie", json));
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto frame = render_scene(context(), *scene, {});
+  ASSERT_FALSE(frame);
+  EXPECT_NE(frame.error().message.find("bad_cookie.json: lights[0].cookie: "), std::string::npos)
+      << frame.error().message;
+}
+
 // ---- errors -------------------------------------------------------------------
 
 struct BadCase {
