@@ -3,7 +3,8 @@
 // and SHADOWS_DEPTH (spot lights) sample the light's shadow map through a
 // light-space coordinate (FacetShadow.hlsl), as Unity does where it has no
 // screen-space shadows; SHADOWS_CUBE (point lights) is not rendered and
-// gives 1. Attenuation follows POINT/SPOT/DIRECTIONAL (FacetLight.hlsl).
+// gives 1. Attenuation follows POINT/SPOT/DIRECTIONAL/DIRECTIONAL_COOKIE
+// (FacetLight.hlsl).
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
 
@@ -52,7 +53,7 @@
 // LIGHTING_COORDS(idx1, idx2) adds the interpolators (light space position in
 // TEXCOORD<idx1>, shadow coordinates in TEXCOORD<idx2>); TRANSFER_VERTEX_TO_FRAGMENT(o)
 // fills them from `v.vertex` (so the vertex input must be called v, as in Unity).
-#if defined(POINT) || defined(POINT_COOKIE) || defined(SPOT)
+#if defined(POINT) || defined(POINT_COOKIE) || defined(SPOT) || defined(DIRECTIONAL_COOKIE)
 #define DECLARE_LIGHT_COORDS(idx) float3 _LightCoord : TEXCOORD##idx;
 #define COMPUTE_LIGHT_COORDS(a) a._LightCoord = FacetLightCoord(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz);
 #define LIGHT_ATTENUATION(a) (FacetLightAttenuationAt(a._LightCoord) * SHADOW_ATTENUATION(a))

@@ -57,13 +57,13 @@ cbuffer FacetPerLight : register(b0, space1)
     float4 _FacetLightColor0;           // colour * intensity; _LightColor0 in UnityLightingCommon.cginc
     float4x4 unity_WorldToLight;        // world -> light space scaled by 1/range (point, spot)
     float4 _LightPositionRange;         // xyz = position, w = 1/range
-    float4 _FacetSpotParams;            // x = cos(outer half angle), y = 1/(cos(inner) - cos(outer))
+    float4 _FacetSpotParams;            // x = cos(outer half angle), y = 1/(cos(inner) - cos(outer)), z = 2 tan(outer half angle)
     float4 _LightShadowData;            // x = shadow strength complement (1 - strength)
     float4x4 unity_WorldToShadow[4];
     float4 unity_LightShadowBias;       // ShadowCaster: x = depth bias (clip space), y = 1 to clamp to the near plane, z = normal offset (world units)
     float4 _ShadowMapTexture_TexelSize; // (1/size, 1/size, size, size) of the light's shadow map
 };
-sampler2D _LightTexture0 : register(s1, space1);          // light cookie (not used by facet's attenuation yet)
+sampler2D _LightTexture0 : register(s1, space1);          // light cookie: SPOT and DIRECTIONAL_COOKIE multiply by its alpha
 sampler2D _ShadowMapTexture : register(s2, space1);        // the light's shadow map (depth), FacetShadow.hlsl
 
 // ---- set 3: per draw (the object) ------------------------------------------

@@ -16,3 +16,13 @@ oiiotool --pattern fill:left=1,1,1,0.3:right=1,1,1,0.8 32x32 4 -d uint8 -o glass
 # A tangent-space normal map of tiles tilted alternately left and right
 # (linear data: load it with "srgb": false).
 oiiotool --pattern checker:width=8:height=8:color1=0.75,0.5,0.93:color2=0.25,0.5,0.93 32x32 3 -d uint8 -o tiles_normal.png
+
+# A light cookie (grey: the cookie's alpha is its grey level): a window of four
+# panes with a dark square in the top-left pane's corner, so that a flipped or
+# rotated projection shows; softened by a blur.
+oiiotool --pattern constant:color=0 64x64 1 --fill:color=1 23x23+6+6 --fill:color=1 23x23+35+6 \
+  --fill:color=1 23x23+6+35 --fill:color=1 23x23+35+35 --fill:color=0 9x9+6+6 --blur 3x3 -d uint8 -o cookie_window.png
+
+# A directional light's cookie: a soft checker of light and shade (tiles every
+# cookie_size world units).
+oiiotool --pattern checker:width=16:height=16:color1=1:color2=0.2 64x64 1 --blur 7x7 -d uint8 -o cookie_checker.png

@@ -172,6 +172,7 @@ struct Builder {
         add_record.additive = true;
         add_record.light = light_name(scene, extra[k]);
         add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}, additive", k + 1, extra.size()) + fog_note;
+        if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
         FACET_TRY(add(object, p, &light, global, add_record));
       }
     }
@@ -185,7 +186,9 @@ LightSetup setup_lights(const Scene& scene) {
   LightSetup setup;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     setup.lights.push_back(light_values(scene.lights[i]));
-    if (scene.lights[i].type != LightType::directional) continue;
+    // ForwardBase has no cookie variant (multi_compile_fwdbase declares only
+    // DIRECTIONAL), so a directional light with a cookie is drawn additively.
+    if (scene.lights[i].type != LightType::directional || scene.lights[i].cookie) continue;
     if (setup.main < 0 || setup.lights[i].brightness > setup.lights[size_t(setup.main)].brightness) {
       setup.main = int(i);
     }

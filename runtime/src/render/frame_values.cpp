@@ -1,10 +1,12 @@
 #include "render/frame_values.h"
 
 #include <cmath>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "facet/runtime/material.h"
+#include "facet/runtime/sky_sh.h"
 
 namespace facet::runtime {
 namespace {
@@ -13,6 +15,38 @@ glm::vec3 v3(const Vec3& a) { return {a[0], a[1], a[2]}; }
 
 void set(UniformValues& u, const std::string& name, const glm::mat4& m) { u.set_matrix(name, glm::value_ptr(m)); }
 void set(UniformValues& u, const std::string& name, const glm::vec4& v) { u.set_vector(name, v.x, v.y, v.z, v.w); }
+
+// A flat ambient colour is the L0 term alone: ShadeSH9(n) returns it for every
+// n. A sky is projected onto L2 SH; unity_Ambient* are its three colours.
+void set_ambient(UniformValues& u, const Scene& scene) {
+  glm::vec3 ambient = linear_color(scene.ambient);
+  glm::vec3 sky = ambient, equator = ambient, ground = ambient;
+  UnitySh sh = flat_unity_sh(ambient);
+  if (scene.sky) {
+    SkyRadiance r = linear_sky(*scene.sky);
+    sky = r.zenith, equator = r.horizon, ground = r.ground;
+    ambient = sky;  // UNITY_LIGHTMODEL_AMBIENT is the sky colour of a gradient
+    sh = pack_unity_sh(project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); }));
+  }
+  set(u, "unity_AmbientSky", glm::vec4(sky, 1));
+  set(u, "unity_AmbientEquator", glm::vec4(equator, 1));
+  set(u, "unity_AmbientGround", glm::vec4(ground, 1));
+  set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
+  const char* a[3] = {"unity_SHAr", "unity_SHAg", "unity_SHAb"};
+  const char* b[3] = {"unity_SHBr", "unity_SHBg", "unity_SHBb"};
+  for (int ch = 0; ch < 3; ++ch) {
+    set(u, a[ch], sh.a[ch]);
+    set(u, b[ch], sh.b[ch]);
+  }
+  set(u, "unity_SHC", sh.c);
+}
+
+// Directional cookies repeat every `size` world units over the light's XY
+// plane; uv (0.5, 0.5) is on the light's axis through its position.
+glm::mat4 directional_cookie_matrix(const glm::mat4& light_to_world, float size) {
+  glm::mat4 to_uv = glm::translate(glm::mat4(1), {0.5f, 0.5f, 0}) * glm::scale(glm::mat4(1), {1 / size, 1 / size, 1});
+  return to_uv * glm::inverse(light_to_world);
+}
 
 }  // namespace
 
@@ -98,16 +132,7 @@ UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int 
   float range = fog.end - fog.start;
   set(u, "unity_FogParams", {fog.density / std::sqrt(std::log(2.0f)), fog.density / std::log(2.0f), -1 / range,
                              fog.end / range});
-  // A flat ambient colour is the L0 term alone: ShadeSH9(n) returns it for every n.
-  glm::vec3 ambient = linear_color(scene.ambient);
-  set(u, "unity_AmbientSky", glm::vec4(ambient, 1));
-  set(u, "unity_AmbientEquator", glm::vec4(ambient, 1));
-  set(u, "unity_AmbientGround", glm::vec4(ambient, 1));
-  set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
-  set(u, "unity_SHAr", {0, 0, 0, ambient.r});
-  set(u, "unity_SHAg", {0, 0, 0, ambient.g});
-  set(u, "unity_SHAb", {0, 0, 0, ambient.b});
-  for (const char* zero : {"unity_SHBr", "unity_SHBg", "unity_SHBb", "unity_SHC"}) set(u, zero, glm::vec4(0));
+  set_ambient(u, scene);
   set(u, "unity_SpecCube0_HDR", {1, 1, 0, 0});
   set(u, "unity_SpecCube0_BoxMax", {0, 0, 0, 0});
   set(u, "unity_SpecCube0_BoxMin", {0, 0, 0, 0});
@@ -129,10 +154,13 @@ LightValues light_values(const SceneLight& light) {
   set(u, "_LightColor0", glm::vec4(color, 1));
   set(u, "_LightShadowData", {1, 0, 0, 0});
   u.set_elements("unity_WorldToShadow", std::vector<float>(64, 0.0f));
+  l.cookie = light.cookie;
+  l.json_path = light.json_path;
   if (light.type == LightType::directional) {
-    l.keyword = "DIRECTIONAL";
+    l.keyword = light.cookie ? "DIRECTIONAL_COOKIE" : "DIRECTIONAL";
     set(u, "_WorldSpaceLightPos0", glm::vec4(-l.direction, 0));
-    set(u, "unity_WorldToLight", glm::inverse(rotation));
+    set(u, "unity_WorldToLight", light.cookie ? directional_cookie_matrix(light_to_world, light.cookie_size)
+                                              : glm::inverse(rotation));
     set(u, "_LightPositionRange", {0, 0, 0, 0});
     return l;
   }
@@ -140,10 +168,18 @@ LightValues light_values(const SceneLight& light) {
   set(u, "_WorldSpaceLightPos0", glm::vec4(l.position, 1));
   glm::mat4 to_light = light.type == LightType::point ? glm::translate(glm::mat4(1), -l.position)
                                                       : glm::inverse(light_to_world);
-  set(u, "unity_WorldToLight", glm::scale(glm::mat4(1), glm::vec3(1 / light.range)) * to_light);
-  set(u, "_LightPositionRange", glm::vec4(l.position, 1 / light.range));
+  glm::mat4 world_to_light = glm::scale(glm::mat4(1), glm::vec3(1 / light.range)) * to_light;
   float outer = std::cos(glm::radians(light.spot_angle / 2)), inner = std::cos(glm::radians(light.inner_spot_angle / 2));
-  set(u, "_FacetSpotParams", {outer, 1 / std::max(inner - outer, 1e-4f), 0, 0});
+  float cone = 2 * std::tan(glm::radians(light.spot_angle / 2));
+  if (light.type == LightType::spot) {
+    // Unity's projective spot matrix: w = z * 2 tan(angle / 2), so that
+    // xy / w + 0.5 is the cookie's uv, 0..1 across the cone; xyz stay as
+    // they are for the distance and cone falloffs.
+    world_to_light = glm::row(world_to_light, 3, glm::row(world_to_light, 2) * cone);
+  }
+  set(u, "unity_WorldToLight", world_to_light);
+  set(u, "_LightPositionRange", glm::vec4(l.position, 1 / light.range));
+  set(u, "_FacetSpotParams", {outer, 1 / std::max(inner - outer, 1e-4f), cone, 0});
   return l;
 }
 

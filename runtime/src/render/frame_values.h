@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <string>
 
 #include "facet/runtime/scene.h"
@@ -38,6 +39,8 @@ struct LightValues {
   float brightness = 0;      // intensity x luminance of the linear colour
   glm::vec3 position{0};     // point and spot
   glm::vec3 direction{0, 0, 1};  // the way a directional or spot light shines
+  std::optional<SceneTexture> cookie;  // bound as _LightTexture0 (white when absent)
+  std::string json_path;               // "lights[1]", for messages
 };
 
 LightValues light_values(const SceneLight& light);

@@ -406,8 +406,9 @@ struct Recorder {
     push_zeros(commands, program);
   }
 
-  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object) {
+  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light) {
     if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
+    if (r.set == 1 && r.name == "_LightTexture0" && light.cookie) return cookie_image(light);
     if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
       auto it = object.material.textures.find(r.name);
       if (it != object.material.textures.end()) {
@@ -419,6 +420,12 @@ struct Recorder {
     Result<const Image*, std::string> f = resources.fallback(r.dim.empty() ? "2D" : r.dim, r.arrayed);
     if (!f) return unexpected(error(fmt::format("resource '{}': {}", r.name, f.error())));
     return *f;
+  }
+
+  Result<const Image*, RenderError> cookie_image(const LightValues& light) {
+    Result<const LoadedTexture*, std::string> t = resources.texture(*light.cookie);
+    if (!t) return unexpected(error(fmt::format("{}.cookie: {}", light.json_path, t.error())));
+    return &(*t)->image;
   }
 
   // `captured`: where the descriptors' contents go when capturing the frame.
@@ -473,7 +480,7 @@ struct Recorder {
         VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
         CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
         if (r.kind != ResourceKind::separate_sampler) {
-          Result<const Image*, RenderError> image = image_for(r, object);
+          Result<const Image*, RenderError> image = image_for(r, object, *draw.light);
           if (!image) return unexpected(image.error());
           if (captured) {
             Result<int, std::string> index = capture->image(*image);
@@ -588,7 +595,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   CameraMatrices camera = camera_matrices(scene.camera, frame.width, frame.height);
   UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
   glm::vec3 ambient = linear_color(scene.ambient);
-  if (!resources.environment({ambient.r, ambient.g, ambient.b})) {
+  if (!(scene.sky ? resources.sky_environment(*scene.sky) : resources.environment({ambient.r, ambient.g, ambient.b}))) {
     return unexpected(error("cannot create the environment cube"));
   }
   std::vector<ObjectState> objects;
@@ -598,6 +605,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     objects.push_back(std::move(*o));
   }
   LightSetup lights = setup_lights(scene);
+  if (Result<void, std::string> cookies = resources.load_cookies(scene); !cookies) return unexpected(error(cookies.error()));
   Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
   if (!list) return unexpected(list.error());
   std::unique_ptr<GpuMesh> quad;

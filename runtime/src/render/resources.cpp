@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/material.h"
+#include "facet/runtime/sky_sh.h"
 #include "facet/runtime/vulkan_context.h"
 #include "image_io/image_io.h"
 
@@ -114,6 +115,9 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
       float* d = &linear[(size_t(y) * w + x) * 4];
       float rgba[4] = {s[0], channels > 1 && channels != 2 ? s[1] : s[0], channels > 2 ? s[2] : s[0],
                        channels == 4 ? s[3] : channels == 2 ? s[1] : 1.0f};
+      if (ref.alpha_from_gray && (channels == 1 || channels == 3)) {
+        rgba[3] = 0.2126f * rgba[0] + 0.7152f * rgba[1] + 0.0722f * rgba[2];
+      }
       for (int c = 0; c < 4; ++c) d[c] = decode && c < 3 ? float(srgb_to_linear(rgba[c])) : rgba[c];
     }
   }
@@ -143,7 +147,7 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
 }
 
 Result<const LoadedTexture*, std::string> Resources::texture(const SceneTexture& ref) {
-  auto key = std::make_pair(ref.name, ref.srgb);
+  auto key = std::make_tuple(ref.name, ref.srgb, ref.alpha_from_gray);
   if (auto it = textures_.find(key); it != textures_.end()) return it->second.get();
   Result<LoadedTexture, std::string> made =
       ref.builtin ? solid(builtin_rgba(ref.name), VK_IMAGE_VIEW_TYPE_2D, 1, false) : load_file(ref);
@@ -195,6 +199,32 @@ Result<const Image*, std::string> Resources::environment(const Vec3& c) {
     if (!made) return unexpected(made.error());
     environment_ = std::make_unique<LoadedTexture>(std::move(*made));
   }
+  return &environment_->image;
+}
+
+Result<void, std::string> Resources::load_cookies(const Scene& scene) {
+  for (const SceneLight& light : scene.lights) {
+    if (!light.cookie) continue;
+    Result<const LoadedTexture*, std::string> t = texture(*light.cookie);
+    if (!t) return unexpected(fmt::format("{}: {}.cookie: {}", scene.path, light.json_path, t.error()));
+  }
+  return {};
+}
+
+Result<const Image*, std::string> Resources::sky_environment(const SceneSky& sky) {
+  constexpr uint32_t kFace = 16;
+  std::vector<std::vector<float>> levels = sky_cube_mips(linear_sky(sky), kFace);
+  std::vector<std::vector<std::byte>> mips;
+  for (const std::vector<float>& level : levels) mips.push_back(encode(level, VK_FORMAT_R16G16B16A16_SFLOAT));
+  VkResultOf<Image> image = create_image(context_, {.width = kFace, .height = kFace, .layers = 6,
+                                                    .mips = uint32_t(mips.size()), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                                    .view = VK_IMAGE_VIEW_TYPE_CUBE});
+  if (!image) return unexpected(describe(image.error()));
+  std::vector<std::span<const std::byte>> spans(mips.begin(), mips.end());
+  VkResultOf<void> up = upload_image(context_, *image, spans);
+  if (!up) return unexpected(describe(up.error()));
+  environment_ = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), kFace, kFace});
   return &environment_->image;
 }
 

@@ -1,13 +1,14 @@
 // GPU textures and samplers of a frame: the built-in textures, files read
 // through image_io (OpenImageIO) (cached by path and colour space), fallback images for
 // every dimension, and the environment cube that stands in for a reflection
-// probe (the flat ambient colour).
+// probe (the flat ambient colour or the procedural sky).
 #pragma once
 
 #include <map>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,12 @@ class Resources {
   Result<const Image*, std::string> fallback(std::string_view dim, bool arrayed);
   // The environment cube (1 texel per face) of this linear colour.
   Result<const Image*, std::string> environment(const Vec3& linear_color);
+  // The environment cube of a sky: 16 texels per face, mips down to 1 by box
+  // filtering (RGBA16F), replacing the flat one.
+  Result<const Image*, std::string> sky_environment(const SceneSky& sky);
+  // Loads every light's cookie before recording; errors name
+  // "<scene>: lights[i].cookie".
+  Result<void, std::string> load_cookies(const Scene& scene);
   VkSampler sampler();  // trilinear, repeat
 
   size_t textures_loaded() const { return files_loaded_; }
@@ -52,7 +59,7 @@ class Resources {
   Result<LoadedTexture, std::string> load_file(const SceneTexture& ref);
 
   const Context& context_;
-  std::map<std::pair<std::string, bool>, std::unique_ptr<LoadedTexture>> textures_;
+  std::map<std::tuple<std::string, bool, bool>, std::unique_ptr<LoadedTexture>> textures_;  // name, sRGB, alpha from grey
   std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
   std::unique_ptr<LoadedTexture> environment_;
   VkSampler sampler_ = VK_NULL_HANDLE;

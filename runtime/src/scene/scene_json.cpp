@@ -158,7 +158,8 @@ struct Reader {
 
   SceneLight light(const json& j, const std::string& path) const {
     check_keys(j, path, {"type", "position", "rotation", "look_at", "color", "intensity", "range", "spot_angle",
-                         "inner_spot_angle", "shadows", "shadow_strength", "shadow_bias", "shadow_normal_bias"});
+                         "inner_spot_angle", "shadows", "shadow_strength", "shadow_bias", "shadow_normal_bias",
+                         "cookie", "cookie_size"});
     SceneLight l;
     l.json_path = path;
     if (!j.contains("type")) throw Bad{path, "missing key 'type' (directional, point or spot)"};
@@ -187,7 +188,29 @@ struct Reader {
       }
     }
     shadow_settings(j, path, l);
+    cookie(j, path, l);
     return l;
+  }
+
+  // A cookie is a texture name (a file or a built-in); its alpha is the mask,
+  // so a file without alpha gives its grey level, as Unity's cookie import.
+  void cookie(const json& j, const std::string& path, SceneLight& l) const {
+    if (j.contains("cookie")) {
+      std::string cpath = join(path, "cookie");
+      if (l.type == LightType::point) {
+        throw Bad{cpath, "point lights take no cookie (cube cookies are not supported; use a spot or directional light)"};
+      }
+      if (!member(j, "cookie").is_string()) throw Bad{cpath, "expected a texture file name or a built-in texture name"};
+      l.cookie = texture(member(j, "cookie"), cpath);
+      l.cookie->srgb = false;
+      l.cookie->alpha_from_gray = true;
+    }
+    if (j.contains("cookie_size")) {
+      if (l.type != LightType::directional) {
+        throw Bad{join(path, "cookie_size"), "only a directional light's cookie has a size (a spot's fills its cone)"};
+      }
+      l.cookie_size = positive(member(j, "cookie_size"), join(path, "cookie_size"));
+    }
   }
 
   SceneTexture texture(const json& j, const std::string& path) const {
@@ -305,6 +328,32 @@ struct Reader {
     return f;
   }
 
+  // A flat colour, or {"sky": {...}}: a procedural sky projected onto SH.
+  void ambient(const json& j, Scene& s) const {
+    if (j.is_array()) {
+      Vec4 c = color(j, "ambient");
+      s.ambient = {c[0], c[1], c[2]};
+      return;
+    }
+    if (!j.is_object()) throw Bad{"ambient", "expected a colour (3 or 4 numbers) or {\"sky\": {...}}"};
+    check_keys(j, "ambient", {"sky"});
+    if (!j.contains("sky")) throw Bad{"ambient", "missing key 'sky'"};
+    const json& k = member(j, "sky");
+    const std::string path = "ambient.sky";
+    check_keys(k, path, {"zenith", "horizon", "ground", "intensity"});
+    SceneSky sky;
+    for (auto [key, slot] : {std::pair{"zenith", &sky.zenith}, std::pair{"horizon", &sky.horizon}, std::pair{"ground", &sky.ground}}) {
+      if (!k.contains(key)) continue;
+      Vec4 c = color(member(k, key), join(path, key));
+      *slot = {c[0], c[1], c[2]};
+    }
+    if (k.contains("intensity")) {
+      sky.intensity = number(member(k, "intensity"), join(path, "intensity"));
+      if (sky.intensity < 0) throw Bad{join(path, "intensity"), "expected a number >= 0"};
+    }
+    s.sky = sky;
+  }
+
   // A material plus the pass to blit with.
   ScenePostEffect post_effect(const json& j, const std::string& path) const {
     check_keys(j, path, {"shader", "properties", "keywords", "pass"});
@@ -335,10 +384,7 @@ struct Reader {
     const json& objects = member(j, "objects");
     if (!objects.is_array()) throw Bad{"objects", "expected a list of objects"};
     for (size_t i = 0; i < objects.size(); ++i) s.objects.push_back(object(objects[i], index("objects", i)));
-    if (j.contains("ambient")) {
-      Vec4 c = color(member(j, "ambient"), "ambient");
-      s.ambient = {c[0], c[1], c[2]};
-    }
+    if (j.contains("ambient")) ambient(member(j, "ambient"), s);
     if (j.contains("fog")) s.fog = fog(member(j, "fog"), "fog");
     if (j.contains("tonemap")) {
       s.tonemap = word<Tonemap>(member(j, "tonemap"), "tonemap",

@@ -47,6 +47,16 @@ struct SceneCamera {
   float exposure = 1;
 };
 
+// A texture a property names: a built-in ("white", "black", "gray", "bump",
+// "red") or a file (path resolved against the scene's folder).
+struct SceneTexture {
+  std::string name;       // built-in name or resolved path
+  bool builtin = false;
+  bool srgb = true;       // colour data; false for normal maps, masks, data
+  bool alpha_from_gray = false;  // a file without alpha gets alpha = its grey level (cookies)
+  std::array<float, 2> scale{1, 1}, offset{0, 0};
+};
+
 enum class LightType { directional, point, spot };
 
 // Unity's LightShadows: soft adds SHADOWS_SOFT (3x3 percentage-closer filtering).
@@ -65,6 +75,19 @@ struct SceneLight {
   float shadow_strength = 1;              // 0..1: how dark the shadow is
   float shadow_bias = 1;                  // depth bias, in shadow-map texels (their world size)
   float shadow_normal_bias = 0.4f;        // casters shrunk along their normals, in texels
+  // The cookie's alpha masks the light (Unity's _LightTexture0.w): spot
+  // lights project it over the cone, directional lights repeat it every
+  // cookie_size world units in the light's XY plane. Point lights have none.
+  std::optional<SceneTexture> cookie;
+  float cookie_size = 10;   // directional, world units (Unity's Light.cookieSize)
+};
+
+// A procedural sky for the ambient light (sRGB-authored colours): radiance
+// horizon -> zenith linearly in the direction's y above the horizon, horizon
+// -> ground linearly in -y below, times intensity (facet/runtime/sky_sh.h).
+struct SceneSky {
+  Vec3 zenith{0.2f, 0.45f, 0.8f}, horizon{0.75f, 0.8f, 0.85f}, ground{0.3f, 0.27f, 0.22f};
+  float intensity = 1;
 };
 
 enum class FogMode { off, linear, exp, exp2 };
@@ -76,15 +99,6 @@ struct SceneFog {
 };
 
 enum class Tonemap { none, reinhard, aces };
-
-// A texture a property names: a built-in ("white", "black", "gray", "bump",
-// "red") or a file (path resolved against the scene's folder).
-struct SceneTexture {
-  std::string name;       // built-in name or resolved path
-  bool builtin = false;
-  bool srgb = true;       // colour data; false for normal maps, masks, data
-  std::array<float, 2> scale{1, 1}, offset{0, 0};
-};
 
 // One entry of material.properties, before the shader says what it must be.
 struct SceneProperty {
@@ -127,6 +141,7 @@ struct Scene {
   std::vector<SceneLight> lights;
   std::vector<SceneObject> objects;
   Vec3 ambient{0.2f, 0.2f, 0.2f};   // sRGB-authored flat ambient
+  std::optional<SceneSky> sky;      // replaces the flat ambient when present
   SceneFog fog;
   Tonemap tonemap = Tonemap::none;
   int pixel_light_count = 4;        // Unity's default pixel light limit

@@ -1,0 +1,73 @@
+// The procedural sky of a scene's `ambient` (docs/scene-format.md) and its
+// L2 spherical harmonics in Unity's packing, so that ShadeSH9 (FacetSHEval in
+// stdlib/FacetCore.hlsl) returns the sky's irradiance divided by pi, which is
+// the ambient colour itself for a flat sky.
+//
+//   SkyRadiance sky = linear_sky(scene_sky);
+//   UnitySh packed = pack_unity_sh(project_sh([&](glm::vec3 d) { return sky_radiance(sky, d); }));
+//   glm::vec3 ambient_up = eval_unity_sh(packed, {0, 1, 0});
+#pragma once
+
+#include <array>
+#include <functional>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "facet/runtime/scene.h"
+
+namespace facet::runtime {
+
+// Linear radiance colours of the gradient, intensity applied.
+struct SkyRadiance {
+  glm::vec3 zenith{0}, horizon{0}, ground{0};
+};
+
+SkyRadiance linear_sky(const SceneSky& sky);
+
+// Radiance towards unit direction d (world space, Y up): horizon -> zenith
+// linearly in d.y above the horizon, horizon -> ground linearly in -d.y below.
+glm::vec3 sky_radiance(const SkyRadiance& sky, const glm::vec3& d);
+
+// Projection coefficients of a radiance function on the real SH basis of
+// bands 0..2, in the order (l, m) = (0,0), (1,-1), (1,0), (1,1), (2,-2),
+// (2,-1), (2,0), (2,1), (2,2), where Y(1,-1) ~ y, Y(1,0) ~ z, Y(1,1) ~ x.
+using ShCoefficients = std::array<glm::vec3, 9>;
+
+// The real SH basis functions at unit direction d, in ShCoefficients order.
+std::array<float, 9> sh_basis(const glm::vec3& d);
+
+// Numerical projection: Gauss-Legendre in y on each hemisphere separately
+// (a sky has a kink at the horizon) times `azimuth_steps` even steps in the
+// azimuth. Deterministic; exact for radiance that is a polynomial of degree
+// <= 2 * `height_nodes` - 3 in y on each hemisphere (a gradient is degree 1).
+ShCoefficients project_sh(const std::function<glm::vec3(const glm::vec3&)>& radiance, int height_nodes = 16,
+                          int azimuth_steps = 32);
+
+// unity_SHAr/g/b, unity_SHBr/g/b, unity_SHC for irradiance / pi of the
+// radiance whose projection is `radiance`: bands scaled by the clamped cosine's
+// convolution factors (pi, 2 pi / 3, pi / 4) over pi, and the basis constants
+// folded in, so that FacetSHEval is
+//   dot(A, (n, 1)) + dot(B, n.xyzz * n.yzzx) + C * (n.x^2 - n.y^2).
+struct UnitySh {
+  std::array<glm::vec4, 3> a{};  // r, g, b
+  std::array<glm::vec4, 3> b{};
+  glm::vec4 c{0};
+};
+
+UnitySh pack_unity_sh(const ShCoefficients& radiance);
+// The packing of a flat ambient colour: L0 only, (0, 0, 0, colour).
+UnitySh flat_unity_sh(const glm::vec3& ambient);
+
+// The CPU twin of FacetSHEval (clamped at 0 as the shader does).
+glm::vec3 eval_unity_sh(const UnitySh& sh, const glm::vec3& n);
+
+// The environment cube of a sky: `size` texels per face, faces in Vulkan's
+// order (+X, -X, +Y, -Y, +Z, -Z), each face's rows from t = 0, RGBA floats;
+// then each smaller mip by a 2x2 box filter down to 1 texel (mips[0] is the
+// full size). Texel directions follow Vulkan's cube face selection.
+std::vector<std::vector<float>> sky_cube_mips(const SkyRadiance& sky, uint32_t size);
+
+// The world direction of texel centre (s, t) in 0..1 of cube face `face`.
+glm::vec3 cube_direction(int face, float s, float t);
+
+}  // namespace facet::runtime
