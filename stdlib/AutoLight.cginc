@@ -27,16 +27,16 @@
 
 // ---- shadows ------------------------------------------------------------------------
 // SHADOW_COORDS adds the light-space coordinate; TRANSFER_SHADOW fills it from
-// `v.vertex` (the vertex input must be called v, as in Unity). The
-// UNITY_SHADOW_ATTENUATION form computes the coordinate from the world
-// position in the fragment stage, so it also works without the interpolator.
+// `v.vertex` (the vertex input must be called v, as in Unity); the
+// attenuation macros read it (UNITY_SHADOW_ATTENUATION's world position is
+// unused, as in Unity when the coordinate is interpolated).
 #if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
 #define SHADOW_COORDS(idx1) float4 _ShadowCoord : TEXCOORD##idx1;
 #define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
 #define TRANSFER_SHADOW(a) a._ShadowCoord = FacetShadowCoord(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz);
 #define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
 #define SHADOW_ATTENUATION(a) FacetSampleShadow(a._ShadowCoord)
-#define UNITY_SHADOW_ATTENUATION(a, worldPos) FacetSampleShadow(FacetShadowCoord(worldPos))
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) SHADOW_ATTENUATION(a)
 #define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = FacetShadowCoord(wpos);
 #else
 #define SHADOW_COORDS(idx1)

@@ -4,8 +4,10 @@
 //   unity_WorldToShadow[0]: world -> (u, v, depth, w) of that map, depth 0..1
 //     from the light, not reversed (w = 1 for a directional light);
 //   _LightShadowData.x: 1 - shadow strength (the shadowed value);
+//   _LightShadowData.y: 1 for soft shadows: 3x3 comparisons averaged
+//     (percentage-closer filtering), chosen at run time because Unity's
+//     ForwardBase variants have no SHADOWS_SOFT (its screen-space pass filters);
 //   _ShadowMapTexture_TexelSize: (1/size, 1/size, size, size).
-// SHADOWS_SOFT filters 3x3 comparisons (percentage-closer filtering).
 #ifndef FACET_SHADOW_INCLUDED
 #define FACET_SHADOW_INCLUDED
 
@@ -23,16 +25,16 @@ float FacetSampleShadow(float4 shadowCoord)
 {
     float3 c = shadowCoord.xyz / max(shadowCoord.w, 1e-6);
     if (shadowCoord.w <= 0.0 || any(c.xy < 0.0) || any(c.xy > 1.0) || c.z > 1.0) return 1.0;
-#if defined(SHADOWS_SOFT)
     float lit = 0.0;
-    float2 texel = _ShadowMapTexture_TexelSize.xy;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-            lit += FacetShadowCompare(c.xy + float2(x, y) * texel, c.z);
-    lit /= 9.0;
-#else
-    float lit = FacetShadowCompare(c.xy, c.z);
-#endif
+    if (_LightShadowData.y > 0.5) {
+        float2 texel = _ShadowMapTexture_TexelSize.xy;
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                lit += FacetShadowCompare(c.xy + float2(x, y) * texel, c.z);
+        lit /= 9.0;
+    } else {
+        lit = FacetShadowCompare(c.xy, c.z);
+    }
     return lerp(_LightShadowData.x, 1.0, lit);
 }
 

@@ -55,6 +55,14 @@ class Writer {
   bool has_output(std::string_view name) const {
     return std::find(output_fields_.begin(), output_fields_.end(), name) != output_fields_.end();
   }
+  // A shadow caster interpolates the world position only for an Input field
+  // that surf reads and that derives from it (an unread output is a validation warning).
+  bool caster_world_pos() const {
+    return runs_surf() && std::any_of(s_.inputs.begin(), s_.inputs.end(), [](const InputField& f) {
+             return f.used && (f.kind == InputKind::world_pos || f.kind == InputKind::view_dir ||
+                               f.kind == InputKind::world_refl);
+           });
+  }
   bool interpolated(const InputField& f) const {
     if (!f.used || !runs_surf()) return false;
     switch (f.kind) {
@@ -71,7 +79,7 @@ class Writer {
     if (shadow()) {
       line("  V2F_SHADOW_CASTER;");
       next_texcoord_ = 1;  // V2F_SHADOW_CASTER takes TEXCOORD0
-      line(fmt::format("  float3 worldPos : {};", semantic()));
+      if (caster_world_pos()) line(fmt::format("  float3 worldPos : {};", semantic()));
     } else {
       line("  UNITY_POSITION(pos);");
       if (tangent_frame()) {
@@ -106,7 +114,7 @@ class Writer {
     }
     line("  float3 worldPos = mul(unity_ObjectToWorld, v.vertex).xyz;");
     if (shadow()) {
-      line("  o.worldPos = worldPos;");
+      if (caster_world_pos()) line("  o.worldPos = worldPos;");
       line("  TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)");
     } else {
       line("  o.pos = UnityObjectToClipPos(v.vertex);");
@@ -167,7 +175,7 @@ class Writer {
         case InputKind::world_refl:
           line(to + (tangent_frame() ? "-worldViewDir;" : "reflect(-worldViewDir, worldNormal);"));
           break;
-        case InputKind::face: line(to + "facing;"); break;
+        case InputKind::face: line(to + "(frontFacing ? 1.0 : -1.0);"); break;
         case InputKind::internal:
           if (tangent_frame()) line(to + "IN.tSpace" + f.name.substr(f.name.size() - 1) + ".xyz;");
           break;
@@ -229,12 +237,16 @@ class Writer {
   void fragment_function() {
     bool face = std::any_of(s_.inputs.begin(), s_.inputs.end(),
                             [&](const InputField& f) { return f.kind == InputKind::face && f.used && runs_surf(); });
-    line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", face ? ", float facing : VFACE" : ""));
+    // SV_IsFrontFace, not VFACE: glslang makes a DX9 VFACE parameter a plain
+    // varying that no vertex stage writes. The Input's VFACE field gets +-1.
+    line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", face ? ", bool frontFacing : SV_IsFrontFace" : ""));
     if (shadow()) {
-      line("  float3 worldPos = IN.worldPos;");
-      line("  float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
-      line("  float3 worldNormal = float3(0, 0, 1);");
       if (runs_surf()) {
+        if (caster_world_pos()) {
+          line("  float3 worldPos = IN.worldPos;");
+          line("  float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
+        }
+        line("  float3 worldNormal = float3(0, 0, 1);");
         fill_input();
         run_surf();
       }

@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "facet/variants.h"
+#include "render/shadows.h"
 
 namespace facet::runtime {
 
@@ -67,7 +68,7 @@ Role role_of(const ir::Pass& pass, std::string& why) {
   if (mode.empty() || iequals(mode, "Always") || iequals(mode, "SRPDefaultUnlit")) return Role::once;
   if (iequals(mode, "ForwardBase")) return Role::base;
   if (iequals(mode, "ForwardAdd")) return Role::add;
-  why = iequals(mode, "ShadowCaster") ? "LightMode ShadowCaster: shadows are not rendered yet"
+  why = iequals(mode, "ShadowCaster") ? "LightMode ShadowCaster: drawn only into shadow maps"
                                       : fmt::format("LightMode {} is not part of forward rendering", mode);
   return Role::skip;
 }
@@ -152,6 +153,11 @@ struct Builder {
           light = &lights.lights[size_t(lights.main)];
           record.light = light_name(scene, size_t(lights.main));
           record.why = "ForwardBase: the brightest directional light, ambient as SH" + fog_note;
+          if (light->shadowed) {
+            std::vector<std::string> shadows = shadow_keywords(scene.lights[size_t(lights.main)]);
+            global.insert(global.end(), shadows.begin(), shadows.end());
+            record.why += "; its shadows: " + join(shadows);
+          }
         } else {
           record.why = "ForwardBase: no directional light (black light), ambient as SH" + fog_note;
         }
@@ -172,6 +178,15 @@ struct Builder {
         add_record.additive = true;
         add_record.light = light_name(scene, extra[k]);
         add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}, additive", k + 1, extra.size()) + fog_note;
+        if (light.shadowed) {
+          std::vector<std::string> shadows = shadow_keywords(scene.lights[extra[k]]);
+          global.insert(global.end(), shadows.begin(), shadows.end());
+          add_record.why += "; its shadows: " + join(shadows);
+        }
+        const SceneLight& scene_light = scene.lights[extra[k]];
+        if (scene_light.type == LightType::point && scene_light.shadows != ShadowMode::none) {
+          add_record.why += "; point-light shadows are not rendered";
+        }
         if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
         FACET_TRY(add(object, p, &light, global, add_record));
       }

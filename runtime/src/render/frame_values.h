@@ -41,6 +41,7 @@ struct LightValues {
   glm::vec3 direction{0, 0, 1};  // the way a directional or spot light shines
   std::optional<SceneTexture> cookie;  // bound as _LightTexture0 (white when absent)
   std::string json_path;               // "lights[1]", for messages
+  bool shadowed = false;               // has a shadow view (shadows.h): receivers ask for shadow keywords
 };
 
 LightValues light_values(const SceneLight& light);

@@ -18,6 +18,7 @@
 #include "render/draw_list.h"
 #include "render/post.h"
 #include "render/resources.h"
+#include "render/shadow_pass.h"
 
 namespace facet::runtime {
 namespace {
@@ -375,6 +376,7 @@ struct Recorder {
   std::map<std::string, const Image*> overrides;  // by resource name: the chain's _MainTex and depth
   VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
   CaptureBuilder* capture = nullptr;
+  const ShadowPasses* shadows = nullptr;  // _ShadowMapTexture of the draw's light
   // What the first frame allocated and wrote for each draw. Later frames
   // bind the same sets and rewrite in place (the previous frame has
   // finished) the members that come from the frame layer, which is rebuilt
@@ -409,6 +411,9 @@ struct Recorder {
   Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light) {
     if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
     if (r.set == 1 && r.name == "_LightTexture0" && light.cookie) return cookie_image(light);
+    if (r.set == 1 && r.name == "_ShadowMapTexture" && shadows) {
+      if (const Image* map = shadows->map_of(&light)) return map;
+    }
     if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
       auto it = object.material.textures.find(r.name);
       if (it != object.material.textures.end()) {
@@ -605,6 +610,13 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     objects.push_back(std::move(*o));
   }
   LightSetup lights = setup_lights(scene);
+  std::vector<ShadowView> shadow_views;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    if (std::optional<ShadowView> v = shadow_view(scene, i, objects, camera.position)) {
+      add_shadow_values(lights.lights[i], scene.lights[i], *v, scene.shadow_resolution);
+      shadow_views.push_back(*v);
+    }
+  }
   if (Result<void, std::string> cookies = resources.load_cookies(scene); !cookies) return unexpected(error(cookies.error()));
   Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
   if (!list) return unexpected(list.error());
@@ -663,6 +675,12 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     pipelines.push_back(*p);
     frame.stats.pipelines += created;
   }
+  ShadowPasses shadows;
+  FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, list->draws, library, fo.cache, shadows,
+                                frame.stats.pipelines));
+  if (options.capture && !shadows.maps.empty()) {
+    return unexpected(error(scene.path + ": a frame capture does not cover shadow maps"));
+  }
   std::vector<Draw> no_draws;
   std::vector<VkPipeline> post_pipelines;
   for (const Draw& d : post ? post->list.draws : no_draws) {
@@ -673,12 +691,15 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     post_pipelines.push_back(*p);
     frame.stats.pipelines += created;
   }
-  Result<VkDescriptorPool, RenderError> pool =
-      make_pool(context.device(), {&list->draws, post ? &post->list.draws : &no_draws});
+  std::vector<const std::vector<Draw>*> all_lists = {&list->draws, post ? &post->list.draws : &no_draws};
+  for (const auto& map : shadows.maps) all_lists.push_back(&map->casters.draws);
+  Result<VkDescriptorPool, RenderError> pool = make_pool(context.device(), all_lists);
   if (!pool) return unexpected(pool.error());
   fo.pool = *pool;
   UniformArena arena(context);
   Recorder recorder{context, resources, arena, fo.pool};
+  recorder.shadows = &shadows;
+  if (!shadows.maps.empty()) recorder.point_sampler = resources.point_sampler();
   std::optional<CaptureBuilder> capture;
   if (options.capture) {
     *options.capture = FrameCapture{};
@@ -706,6 +727,16 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     }
     glm::vec3 clear = linear_color({scene.camera.clear_color[0], scene.camera.clear_color[1], scene.camera.clear_color[2]});
     if (capturing) options.capture->clear_color = {clear.r, clear.g, clear.b, scene.camera.clear_color[3]};
+    Result<uint64_t, RenderError> shadow_triangles = record_shadow_maps(
+        commands, shadows, objects,
+        [&](VkCommandBuffer c, const Draw& d, const UniformValues& light_frame) {
+          return recorder.bind(c, d, objects[d.object], light_frame);
+        });
+    if (!shadow_triangles) {
+      failed = shadow_triangles.error();
+      return;
+    }
+    frame.stats.triangles += *shadow_triangles;
     VkClearValue clears[2]{};
     clears[0].color = {{clear.r, clear.g, clear.b, scene.camera.clear_color[3]}};
     clears[1].depthStencil = {1.0f, 0};
@@ -798,20 +829,32 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   }
   if (!frame.stats.frame_gpu_ms.empty()) frame.stats.gpu_ms = median(frame.stats.frame_gpu_ms);
   finish_image(frame, static_cast<const std::byte*>(readback->data()), scene);
+  for (const auto& map : shadows.maps) {
+    for (Draw& d : map->casters.draws) frame.draws.push_back(std::move(d.record));
+    frame.stats.shadow_draws += map->casters.draws.size();
+  }
+  frame.stats.shadow_maps = shadows.maps.size();
   for (Draw& d : list->draws) {
     frame.stats.additive_draws += d.record.additive;
     frame.draws.push_back(std::move(d.record));
   }
-  frame.stats.draws = list->draws.size();
-  frame.compiled = std::move(list->compiled);
-  frame.stats.variants_compiled = list->variants_compiled;
+  frame.stats.draws = list->draws.size() + frame.stats.shadow_draws;
+  frame.compiled.insert(frame.compiled.end(), list->compiled.begin(), list->compiled.end());
+  frame.stats.variants_compiled += list->variants_compiled;
   if (post) {
     for (Draw& d : post->list.draws) frame.draws.push_back(std::move(d.record));
     frame.stats.draws += post->list.draws.size();
     frame.compiled.insert(frame.compiled.end(), post->list.compiled.begin(), post->list.compiled.end());
     frame.stats.variants_compiled += post->list.variants_compiled;
   }
+  for (const auto& map : shadows.maps) {  // compiled last: after the draws that sample them
+    frame.compiled.insert(frame.compiled.end(), map->casters.compiled.begin(), map->casters.compiled.end());
+    frame.stats.variants_compiled += map->casters.variants_compiled;
+  }
   for (DrawRecord& r : list->skipped) frame.draws.push_back(std::move(r));
+  for (const auto& map : shadows.maps) {
+    for (DrawRecord& r : map->casters.skipped) frame.draws.push_back(std::move(r));
+  }
   frame.stats.shaders_loaded = library.loaded();
   frame.stats.textures_loaded = resources.textures_loaded();
   frame.stats.compile_ms = library.seconds() * 1000;

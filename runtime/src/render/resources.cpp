@@ -68,6 +68,17 @@ std::vector<std::byte> encode(const std::vector<float>& linear, VkFormat format)
 
 Resources::~Resources() {
   if (sampler_) vkDestroySampler(context_.device(), sampler_, nullptr);
+  if (point_sampler_) vkDestroySampler(context_.device(), point_sampler_, nullptr);
+}
+
+VkSampler Resources::point_sampler() {
+  if (point_sampler_) return point_sampler_;
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  vkCreateSampler(context_.device(), &info, nullptr, &point_sampler_);
+  return point_sampler_;
 }
 
 VkSampler Resources::sampler() {

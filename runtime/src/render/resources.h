@@ -44,7 +44,8 @@ class Resources {
   // Loads every light's cookie before recording; errors name
   // "<scene>: lights[i].cookie".
   Result<void, std::string> load_cookies(const Scene& scene);
-  VkSampler sampler();  // trilinear, repeat
+  VkSampler sampler();        // trilinear, repeat
+  VkSampler point_sampler();  // nearest, clamp to edge: depth images (shadow maps)
 
   size_t textures_loaded() const { return files_loaded_; }
 
@@ -62,7 +63,7 @@ class Resources {
   std::map<std::tuple<std::string, bool, bool>, std::unique_ptr<LoadedTexture>> textures_;  // name, sRGB, alpha from grey
   std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
   std::unique_ptr<LoadedTexture> environment_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE, point_sampler_ = VK_NULL_HANDLE;
   size_t files_loaded_ = 0;
   bool keep_pixels_ = false;
 };

@@ -98,22 +98,23 @@ void add_shadow_values(LightValues& light, const SceneLight& scene_light, const 
   const float* m = &view.world_to_shadow[0][0];
   std::copy(m, m + 16, matrices.begin());
   light.values.set_elements("unity_WorldToShadow", std::move(matrices));
-  light.values.set_vector("_LightShadowData", 1 - scene_light.shadow_strength, 0, 0, 0);
+  float soft = scene_light.shadows == ShadowMode::soft ? 1.0f : 0.0f;
+  light.values.set_vector("_LightShadowData", 1 - scene_light.shadow_strength, soft, 0, 0);
   float r = float(resolution);
   light.values.set_vector("_ShadowMapTexture_TexelSize", 1 / r, 1 / r, r, r);
   light.values.set_vector("unity_LightShadowBias", view.caster_bias.x, view.caster_bias.y, view.caster_bias.z, 0);
+  light.shadowed = true;
 }
 
 bool samples_shadow_map(const std::vector<std::string>& keywords) {
   return has_shadow_keyword(keywords, "SHADOWS_SCREEN") || has_shadow_keyword(keywords, "SHADOWS_DEPTH");
 }
 
-std::vector<std::string> shadow_keywords(const SceneLight& light, bool additive) {
+std::vector<std::string> shadow_keywords(const SceneLight& light) {
   if (light.shadows == ShadowMode::none || light.type == LightType::point) return {};
-  (void)additive;  // directional lights use SHADOWS_SCREEN in ForwardBase and ForwardAdd alike, as in Unity
-  std::vector<std::string> out = {light.type == LightType::directional ? "SHADOWS_SCREEN" : "SHADOWS_DEPTH"};
-  if (light.shadows == ShadowMode::soft) out.push_back("SHADOWS_SOFT");
-  return out;
+  // Directional lights use SHADOWS_SCREEN in ForwardBase and ForwardAdd alike, as in Unity.
+  // Soft filtering is a uniform (_LightShadowData.y), so no SHADOWS_SOFT variant is asked for.
+  return {light.type == LightType::directional ? "SHADOWS_SCREEN" : "SHADOWS_DEPTH"};
 }
 
 Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
@@ -142,7 +143,7 @@ Result<DrawListResult, RenderError> build_caster_draws(const Context& context, c
       record.light_mode = "ShadowCaster";
       record.light = light_text;
       record.drawn = false;
-      record.why = "casts no shadow: its shader has no ShadowCaster pass";
+      record.why = fmt::format("casts no shadow into the map of {}: its shader has no ShadowCaster pass", light_text);
       out.skipped.push_back(std::move(record));
     }
   }

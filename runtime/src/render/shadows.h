@@ -41,7 +41,7 @@ void add_shadow_values(LightValues& light, const SceneLight& scene_light, const 
 bool samples_shadow_map(const std::vector<std::string>& keywords);
 
 // The shadow keywords a pass with this light asks for ({} without shadows).
-std::vector<std::string> shadow_keywords(const SceneLight& light, bool additive);
+std::vector<std::string> shadow_keywords(const SceneLight& light);
 
 // The ShadowCaster draws of `objects` into the map of `view`: every object
 // whose shader has a ShadowCaster pass and whose bounds reach the light's

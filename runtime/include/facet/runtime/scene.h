@@ -59,7 +59,7 @@ struct SceneTexture {
 
 enum class LightType { directional, point, spot };
 
-// Unity's LightShadows: soft adds SHADOWS_SOFT (3x3 percentage-closer filtering).
+// Unity's LightShadows: soft filters 3x3 comparisons (percentage-closer filtering).
 enum class ShadowMode { none, hard, soft };
 
 struct SceneLight {

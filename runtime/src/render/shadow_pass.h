@@ -1,0 +1,55 @@
+// The GPU side of shadows (shadows.h): a depth render pass, one D32
+// map per light whose receivers' variants sample it, the casters'
+// pipelines, and recording every map before the camera's pass.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "facet/runtime/image.h"
+#include "render/draw_list.h"
+#include "render/shadows.h"
+
+namespace facet::runtime {
+
+struct ShadowMap {
+  ShadowView view;
+  const LightValues* light = nullptr;
+  DrawListResult casters;
+  UniformValues frame;  // the frame uniforms with the light as the camera
+  Image depth;
+  Image unused_color;  // R8, never written (see make_depth_pass)
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  std::vector<VkPipeline> pipelines;  // per caster draw
+};
+
+struct ShadowPasses {
+  VkDevice device = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  uint32_t resolution = 0;
+  std::vector<std::unique_ptr<ShadowMap>> maps;
+  ShadowPasses() = default;
+  ShadowPasses(const ShadowPasses&) = delete;
+  ShadowPasses& operator=(const ShadowPasses&) = delete;
+  ~ShadowPasses();
+  // The map that `light`'s receivers sample, or null.
+  const Image* map_of(const LightValues* light) const;
+};
+
+// Makes a map for each view whose light some drawn variant samples it with
+// (samples_shadow_map), with the caster draws and their pipelines.
+Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
+                                              const LightSetup& lights, const std::vector<ShadowView>& views,
+                                              const std::vector<Draw>& draws, ShaderLibrary& library,
+                                              VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
+
+using BindDraw = std::function<Result<void, RenderError>(VkCommandBuffer, const Draw&, const UniformValues& frame)>;
+
+// Records every map's pass; returns the triangles drawn.
+Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
+                                                 const std::vector<ObjectState>& objects, const BindDraw& bind);
+
+}  // namespace facet::runtime

@@ -1,0 +1,196 @@
+// Shadow maps on lavapipe: a shadowed light renders one depth map from the
+// ShadowCaster passes, receivers' variants sample it (SHADOWS_SCREEN,
+// SHADOWS_DEPTH), and nothing of it exists when no light casts shadows.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "facet/runtime/frame_capture.h"
+#include "facet/runtime/scene.h"
+#include "render_test_support.h"
+
+namespace facet::runtime {
+namespace {
+
+using test_support::example_shader;
+using test_support::write_scene;
+
+int grey(const RenderedFrame& f, int x, int y) { return f.ldr[(size_t(y) * f.width + x) * 4 + 1]; }
+
+// A floor and a ball 1 above it, seen straight from above (orthographic: 16
+// px per unit, image right = +X, up = +Z). A light tilted 60 degrees towards
+// +Z throws the ball's shadow 0.58 towards +Z: pixel (32, 23); (32, 41) is
+// the floor on the other side, lit.
+std::string ball_scene(const std::string& lights, const std::string& extra_objects = "",
+                       const std::string& settings = "") {
+  std::string standard = example_shader("SurfaceStandard.shader");
+  return R"({"width": 64, "height": 64, "ambient": [0.05, 0.05, 0.05], )" + settings +
+         R"("camera": {"type": "orthographic", "size": 2, "position": [0, 4, 0], "look_at": [0, 0, 0],
+                       "clear_color": [0, 0, 0]},
+           "lights": )" + lights + R"(,
+           "objects": [
+             {"name": "floor", "mesh": "plane", "scale": 0.5, "material": {"shader": ")" + standard +
+         R"(", "properties": {"_Color": [0.8, 0.8, 0.8], "_Glossiness": 0}}},
+             {"name": "ball", "mesh": "sphere", "position": [0, 1, 0], "scale": 0.6, "material": {"shader": ")" +
+         standard + R"(", "properties": {"_Color": [0.8, 0.2, 0.2], "_Glossiness": 0}}})" + extra_objects + "]}";
+}
+
+std::string sun(const std::string& shadows) {
+  return R"([{"type": "directional", "rotation": [60, 0, 0], "intensity": 1.5)" + shadows + "}]";
+}
+
+class ShadowsTest : public test_support::LavapipeTest {
+ protected:
+  Result<RenderedFrame, RenderError> try_render(const std::string& name, const std::string& json, RenderOptions o = {}) {
+    auto scene = parse_scene(json, write_scene(name, json));
+    EXPECT_TRUE(scene) << scene.error().message;
+    if (!scene) return unexpected(RenderError{"no scene"});
+    return render_scene(context(), *scene, o);
+  }
+  RenderedFrame render(const std::string& name, const std::string& json, RenderOptions o = {}) {
+    auto frame = try_render(name, json, o);
+    EXPECT_TRUE(frame) << frame.error().message;
+    return frame ? std::move(*frame) : RenderedFrame{};
+  }
+};
+
+size_t count_if(const RenderedFrame& f, const std::function<bool(const DrawRecord&)>& pred) {
+  return size_t(std::count_if(f.draws.begin(), f.draws.end(), pred));
+}
+
+bool has_keyword(const DrawRecord& d, const std::string& k) {
+  return std::find(d.keywords.begin(), d.keywords.end(), k) != d.keywords.end();
+}
+
+TEST_F(ShadowsTest, ADirectionalLightsShadowDarkensTheFloorBehindTheBall) {
+  RenderedFrame plain = render("plain", ball_scene(sun("")));
+  RenderedFrame shadowed = render("shadowed", ball_scene(sun(R"(, "shadows": "hard")")));
+  ASSERT_FALSE(shadowed.ldr.empty());
+  EXPECT_LT(std::abs(grey(plain, 32, 23) - grey(plain, 32, 41)), 8);
+  EXPECT_LT(grey(shadowed, 32, 23) + 60, grey(shadowed, 32, 41));
+  EXPECT_LT(std::abs(grey(shadowed, 32, 41) - grey(plain, 32, 41)), 3);  // lit floor unchanged: no acne
+  EXPECT_LT(std::abs(grey(shadowed, 32, 32) - grey(plain, 32, 32)), 3);  // the ball's lit top unchanged
+}
+
+TEST_F(ShadowsTest, ZeroStrengthDrawsTheSameImageAsNoShadows) {
+  RenderedFrame plain = render("plain0", ball_scene(sun("")));
+  RenderedFrame none = render("strength0", ball_scene(sun(R"(, "shadows": "hard", "shadow_strength": 0)")));
+  ASSERT_EQ(plain.hdr.size(), none.hdr.size());
+  float worst = 0;
+  for (size_t i = 0; i < plain.hdr.size(); ++i) worst = std::max(worst, std::abs(plain.hdr[i] - none.hdr[i]));
+  EXPECT_LT(worst, 1e-3f);
+  EXPECT_EQ(none.stats.shadow_maps, 1u);
+}
+
+TEST_F(ShadowsTest, NoShadowedLightMeansNoShadowMapNoCasterDrawAndNoShadowVariant) {
+  RenderedFrame f = render("no_shadows", ball_scene(sun("")));
+  EXPECT_EQ(f.stats.shadow_maps, 0u);
+  EXPECT_EQ(f.stats.shadow_draws, 0u);
+  for (const std::string& c : f.compiled) EXPECT_EQ(c.find("SHADOW"), std::string::npos) << c;
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) { return d.drawn && d.light_mode == "ShadowCaster"; }), 0u);
+}
+
+TEST_F(ShadowsTest, AShadowedLightRendersOneMapWithOneCasterDrawPerCaster) {
+  std::string phong = R"(, {"name": "box", "mesh": "cube", "position": [1.5, 0.5, 0], "scale": 0.5,
+                          "material": {"shader": ")" + example_shader("PhongMultiLight.shader") + "\"}}";
+  RenderedFrame f = render("casters", ball_scene(sun(R"(, "shadows": "hard")"), phong));
+  EXPECT_EQ(f.stats.shadow_maps, 1u);
+  EXPECT_EQ(f.stats.shadow_draws, 2u);  // floor and ball: the Phong box's shader has no ShadowCaster pass
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return d.drawn && d.light_mode == "ShadowCaster" && d.light == "lights[0] (directional)" &&
+                     has_keyword(d, "SHADOWS_DEPTH");
+            }),
+            2u);
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return !d.drawn && d.object == "objects[2] (box)" && d.why.find("no ShadowCaster pass") != std::string::npos;
+            }),
+            1u);
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return d.drawn && d.light_mode == "ForwardBase" && has_keyword(d, "SHADOWS_SCREEN");
+            }),
+            3u);
+  // Casters are submitted first: they fill the map the receivers sample.
+  ASSERT_FALSE(f.draws.empty());
+  EXPECT_EQ(f.draws[0].light_mode, "ShadowCaster");
+}
+
+TEST_F(ShadowsTest, ASpotLightsShadowComesThroughItsForwardAddDraw) {
+  std::string spot = R"([{"type": "spot", "position": [0, 3, -1.7], "look_at": [0, 0, 0.4], "range": 8,
+                        "spot_angle": 70, "intensity": 3)";
+  RenderedFrame plain = render("spot_plain", ball_scene(spot + "}]"));
+  RenderedFrame shadowed = render("spot_shadowed", ball_scene(spot + R"(, "shadows": "hard"}])"));
+  ASSERT_FALSE(shadowed.ldr.empty());
+  EXPECT_EQ(shadowed.stats.shadow_maps, 1u);
+  EXPECT_EQ(count_if(shadowed, [](const DrawRecord& d) { return d.additive && has_keyword(d, "SHADOWS_DEPTH"); }), 2u);
+  // The spot stands at -Z and above: the ball's shadow falls towards +Z, at about z = 0.8 (pixel row 19).
+  EXPECT_LT(grey(shadowed, 32, 19) + 40, grey(plain, 32, 19));
+  EXPECT_LT(std::abs(grey(shadowed, 32, 45) - grey(plain, 32, 45)), 3);
+}
+
+TEST_F(ShadowsTest, PointLightShadowsAreNotRenderedAndTheDrawSaysSo) {
+  RenderedFrame f = render("point", ball_scene(R"([{"type": "point", "position": [0, 2, -1], "range": 6,
+                                                   "shadows": "hard"}])"));
+  EXPECT_EQ(f.stats.shadow_maps, 0u);
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return d.additive && d.why.find("point-light shadows are not rendered") != std::string::npos;
+            }),
+            2u);
+}
+
+// Along the column x = 32, count the pixels between shadow and light.
+int penumbra(const RenderedFrame& f) {
+  int dark = grey(f, 32, 23), lit = grey(f, 32, 45), n = 0;
+  for (int y = 0; y < 64; ++y) {
+    int g = grey(f, 32, y);
+    n += g > dark + 12 && g < lit - 12;
+  }
+  return n;
+}
+
+TEST_F(ShadowsTest, SoftShadowsHaveAWiderPenumbraThanHardOnes) {
+  std::string coarse = R"("shadow_resolution": 64, )";
+  RenderedFrame hard = render("hard", ball_scene(sun(R"(, "shadows": "hard")"), "", coarse));
+  RenderedFrame soft = render("soft", ball_scene(sun(R"(, "shadows": "soft")"), "", coarse));
+  ASSERT_FALSE(soft.ldr.empty());
+  EXPECT_GT(penumbra(soft), penumbra(hard) + 2);
+  // Soft is filtering, not another variant.
+  EXPECT_EQ(soft.compiled, hard.compiled);
+}
+
+TEST_F(ShadowsTest, LaterFramesWithShadowsDrawTheSameImage) {
+  std::string json = ball_scene(sun(R"(, "shadows": "soft")"));
+  RenderedFrame one = render("frames1", json);
+  RenderedFrame three = render("frames3", json, {.frames = 3});
+  EXPECT_EQ(one.hdr, three.hdr);
+}
+
+TEST_F(ShadowsTest, AFrameCaptureRefusesShadowMaps) {
+  FrameCapture capture;
+  auto f = try_render("capture", ball_scene(sun(R"(, "shadows": "hard")")), {.capture = &capture});
+  ASSERT_FALSE(f);
+  EXPECT_NE(f.error().message.find("shadow maps"), std::string::npos);
+}
+
+TEST(ShadowScene, BadShadowSettingsNameTheirJsonPath) {
+  struct Case {
+    std::string light_extra, settings, expected;
+  };
+  const std::vector<Case> cases = {
+      {R"(, "shadows": "maybe")", "", "lights[0].shadows: unknown value 'maybe' (expected one of: none, hard, soft)"},
+      {R"(, "shadows": true)", "", "lights[0].shadows: expected a string"},
+      {R"(, "shadow_strength": 1.5)", "", "lights[0].shadow_strength: expected a number from 0 to 1"},
+      {R"(, "shadow_bias": -1)", "", "lights[0].shadow_bias: expected a number from 0 to 10"},
+      {"", R"("shadow_resolution": 8, )", "shadow_resolution: expected an integer from 16 to 8192"},
+      {"", R"("shadow_distance": 0, )", "shadow_distance: expected a number above 0"},
+  };
+  for (const Case& c : cases) {
+    std::string json = ball_scene(sun(c.light_extra), "", c.settings);
+    auto scene = parse_scene(json, "bad.json");
+    ASSERT_FALSE(scene) << c.expected;
+    EXPECT_NE(scene.error().message.find(c.expected), std::string::npos) << scene.error().message;
+  }
+}
+
+}  // namespace
+}  // namespace facet::runtime
