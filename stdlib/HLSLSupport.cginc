@@ -26,6 +26,9 @@
 #define UNITY_UV_STARTS_AT_TOP 1
 #define UNITY_NEAR_CLIP_VALUE (0.0)
 #define SHADER_API_DESKTOP 1
+// Projective texture coordinates go to tex2Dproj as they are (a PS Vita
+// workaround in Unity).
+#define UNITY_PROJ_COORD(a) (a)
 
 // Flow-control attributes.
 #define UNITY_BRANCH [branch]

@@ -414,6 +414,7 @@ struct Recorder {
     if (r.set == 1 && r.name == "_ShadowMapTexture" && shadows) {
       if (const Image* map = shadows->map_of(&light)) return map;
     }
+    if (r.name == "_CameraDepthTexture" && shadows && shadows->camera_depth()) return &shadows->camera_depth()->depth;
     if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
       auto it = object.material.textures.find(r.name);
       if (it != object.material.textures.end()) {
@@ -678,8 +679,14 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   ShadowPasses shadows;
   FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, list->draws, library, fo.cache, shadows,
                                 frame.stats.pipelines));
+  // Objects that sample _CameraDepthTexture get Unity's depth texture: the
+  // opaque objects' ShadowCaster passes from the camera, before the scene.
+  if (std::any_of(list->draws.begin(), list->draws.end(), [](const Draw& d) { return samples(d, "_CameraDepthTexture"); })) {
+    FACET_TRY(prepare_camera_depth(context, scene, objects, lights.none, camera, frame_values, uint32_t(frame.width),
+                                   uint32_t(frame.height), library, fo.cache, shadows, frame.stats.pipelines));
+  }
   if (options.capture && !shadows.maps.empty()) {
-    return unexpected(error(scene.path + ": a frame capture does not cover shadow maps"));
+    return unexpected(error(scene.path + ": a frame capture does not cover shadow maps or the camera depth texture"));
   }
   std::vector<Draw> no_draws;
   std::vector<VkPipeline> post_pipelines;
@@ -831,14 +838,14 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   finish_image(frame, static_cast<const std::byte*>(readback->data()), scene);
   for (const auto& map : shadows.maps) {
     for (Draw& d : map->casters.draws) frame.draws.push_back(std::move(d.record));
-    frame.stats.shadow_draws += map->casters.draws.size();
+    (map->light ? frame.stats.shadow_draws : frame.stats.depth_texture_draws) += map->casters.draws.size();
   }
-  frame.stats.shadow_maps = shadows.maps.size();
+  frame.stats.shadow_maps = shadows.light_maps();
   for (Draw& d : list->draws) {
     frame.stats.additive_draws += d.record.additive;
     frame.draws.push_back(std::move(d.record));
   }
-  frame.stats.draws = list->draws.size() + frame.stats.shadow_draws;
+  frame.stats.draws = list->draws.size() + frame.stats.shadow_draws + frame.stats.depth_texture_draws;
   frame.compiled.insert(frame.compiled.end(), list->compiled.begin(), list->compiled.end());
   frame.stats.variants_compiled += list->variants_compiled;
   if (post) {

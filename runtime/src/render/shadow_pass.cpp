@@ -66,13 +66,13 @@ bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) 
                      [&](const Draw& d) { return d.light == light && samples_shadow_map(d.record.keywords); });
 }
 
-Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, uint32_t size, ShadowMap& map) {
-  VkResultOf<Image> depth = create_image(context, {.width = size, .height = size, .format = VK_FORMAT_D32_SFLOAT,
+Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
+  VkResultOf<Image> depth = create_image(context, {.width = map.width, .height = map.height, .format = VK_FORMAT_D32_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                                             VK_IMAGE_USAGE_SAMPLED_BIT});
   if (!depth) return unexpected(error(describe(depth.error())));
   map.depth = std::move(*depth);
-  VkResultOf<Image> unused = create_image(context, {.width = size, .height = size, .format = VK_FORMAT_R8_UNORM,
+  VkResultOf<Image> unused = create_image(context, {.width = map.width, .height = map.height, .format = VK_FORMAT_R8_UNORM,
                                                     .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
   if (!unused) return unexpected(error(describe(unused.error())));
   map.unused_color = std::move(*unused);
@@ -81,11 +81,36 @@ Result<void, RenderError> make_target(const Context& context, VkRenderPass pass,
   fb.renderPass = pass;
   fb.attachmentCount = 2;
   fb.pAttachments = views;
-  fb.width = fb.height = size;
+  fb.width = map.width;
+  fb.height = map.height;
   fb.layers = 1;
   if (vkCreateFramebuffer(context.device(), &fb, nullptr, &map.framebuffer) != VK_SUCCESS) {
     return unexpected(error("cannot create a shadow-map framebuffer"));
   }
+  return {};
+}
+
+Result<void, RenderError> make_pipelines(const Context& context, const Scene& scene, const std::vector<ObjectState>& objects,
+                                         VkRenderPass pass, VkPipelineCache cache, ShadowMap& map,
+                                         uint64_t& pipelines_created) {
+  for (const Draw& d : map.casters.draws) {
+    bool created = false;
+    PipelineState state = d.state;
+    state.color_mask = 0;
+    Result<VkPipeline, std::string> p =
+        get_pipeline(context, *d.variant->program, state, objects[d.object].mirrored, pass, cache, &created);
+    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+    map.pipelines.push_back(*p);
+    pipelines_created += created;
+  }
+  return {};
+}
+
+Result<void, RenderError> ensure_render_pass(VkDevice device, ShadowPasses& out) {
+  if (out.render_pass) return {};
+  Result<VkRenderPass, RenderError> pass = make_depth_pass(device);
+  if (!pass) return unexpected(pass.error());
+  out.render_pass = *pass;
   return {};
 }
 
@@ -102,7 +127,14 @@ ShadowPasses::~ShadowPasses() {
 
 const Image* ShadowPasses::map_of(const LightValues* light) const {
   for (const auto& map : maps) {
-    if (map->light == light) return &map->depth;
+    if (light && map->light == light) return &map->depth;
+  }
+  return nullptr;
+}
+
+const ShadowMap* ShadowPasses::camera_depth() const {
+  for (const auto& map : maps) {
+    if (!map->light) return map.get();
   }
   return nullptr;
 }
@@ -112,37 +144,49 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
                                               const std::vector<Draw>& draws, ShaderLibrary& library,
                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
   out.device = context.device();
-  out.resolution = uint32_t(scene.shadow_resolution);
+  uint32_t size = uint32_t(scene.shadow_resolution);
   for (const ShadowView& view : views) {
     const LightValues* light = &lights.lights[view.light];
     if (!light_is_sampled(light, draws)) continue;
-    if (!out.render_pass) {
-      Result<VkRenderPass, RenderError> pass = make_depth_pass(context.device());
-      if (!pass) return unexpected(pass.error());
-      out.render_pass = *pass;
-    }
+    FACET_TRY(ensure_render_pass(context.device(), out));
     auto map = std::make_unique<ShadowMap>();
     map->view = view;
     map->light = light;
+    map->width = map->height = size;
     Result<DrawListResult, RenderError> casters = build_caster_draws(context, scene, objects, *light, view, library);
     if (!casters) return unexpected(casters.error());
     map->casters = std::move(*casters);
     Scene seen_from_light = scene;
     seen_from_light.camera = view.lens;
-    map->frame = frame_uniforms(seen_from_light, view.camera, int(out.resolution), int(out.resolution));
-    FACET_TRY(make_target(context, out.render_pass, out.resolution, *map));
-    for (const Draw& d : map->casters.draws) {
-      bool created = false;
-      PipelineState state = d.state;
-      state.color_mask = 0;
-      Result<VkPipeline, std::string> p = get_pipeline(context, *d.variant->program, state, objects[d.object].mirrored,
-                                                       out.render_pass, cache, &created);
-      if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
-      map->pipelines.push_back(*p);
-      pipelines_created += created;
-    }
+    map->frame = frame_uniforms(seen_from_light, view.camera, int(size), int(size));
+    FACET_TRY(make_target(context, out.render_pass, *map));
+    FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
     out.maps.push_back(std::move(map));
   }
+  return {};
+}
+
+Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
+                                               std::vector<ObjectState>& objects, const LightValues& no_light,
+                                               const CameraMatrices& camera, const UniformValues& frame_values,
+                                               uint32_t width, uint32_t height, ShaderLibrary& library,
+                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+  out.device = context.device();
+  FACET_TRY(ensure_render_pass(context.device(), out));
+  auto map = std::make_unique<ShadowMap>();
+  map->view.camera = camera;
+  map->view.lens = scene.camera;
+  map->width = width;
+  map->height = height;
+  Result<DrawListResult, RenderError> casters =
+      caster_draws(context, scene, objects, no_light, [](const ObjectState& o) { return o.queue <= 2500; }, "",
+                   "the camera depth texture", library);
+  if (!casters) return unexpected(casters.error());
+  map->casters = std::move(*casters);
+  map->frame = frame_values;
+  FACET_TRY(make_target(context, out.render_pass, *map));
+  FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
+  out.maps.push_back(std::move(map));
   return {};
 }
 
@@ -155,11 +199,11 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = passes.render_pass;
     begin.framebuffer = map->framebuffer;
-    begin.renderArea = {{0, 0}, {passes.resolution, passes.resolution}};
+    begin.renderArea = {{0, 0}, {map->width, map->height}};
     begin.clearValueCount = 1;
     begin.pClearValues = &clear;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    VkViewport viewport{0, 0, float(passes.resolution), float(passes.resolution), 0, 1};
+    VkViewport viewport{0, 0, float(map->width), float(map->height), 0, 1};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
     Result<void, RenderError> failed;

@@ -1,6 +1,9 @@
 // The GPU side of shadows (shadows.h): a depth render pass, one D32
 // map per light whose receivers' variants sample it, the casters'
-// pipelines, and recording every map before the camera's pass.
+// pipelines, and recording every map before the camera's pass. The camera
+// depth texture of objects that sample _CameraDepthTexture is made the same
+// way, as Unity makes it: the opaque objects' ShadowCaster passes seen from
+// the camera.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -17,7 +20,8 @@ namespace facet::runtime {
 
 struct ShadowMap {
   ShadowView view;
-  const LightValues* light = nullptr;
+  const LightValues* light = nullptr;  // null for the camera depth texture
+  uint32_t width = 0, height = 0;
   DrawListResult casters;
   UniformValues frame;  // the frame uniforms with the light as the camera
   Image depth;
@@ -29,14 +33,15 @@ struct ShadowMap {
 struct ShadowPasses {
   VkDevice device = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
-  uint32_t resolution = 0;
-  std::vector<std::unique_ptr<ShadowMap>> maps;
+  std::vector<std::unique_ptr<ShadowMap>> maps;  // the lights' maps, then the camera depth texture
   ShadowPasses() = default;
   ShadowPasses(const ShadowPasses&) = delete;
   ShadowPasses& operator=(const ShadowPasses&) = delete;
   ~ShadowPasses();
   // The map that `light`'s receivers sample, or null.
   const Image* map_of(const LightValues* light) const;
+  const ShadowMap* camera_depth() const;
+  size_t light_maps() const { return maps.size() - (camera_depth() ? 1 : 0); }
 };
 
 // Makes a map for each view whose light some drawn variant samples it with
@@ -45,6 +50,14 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
                                               const LightSetup& lights, const std::vector<ShadowView>& views,
                                               const std::vector<Draw>& draws, ShaderLibrary& library,
                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
+
+// Adds the camera depth texture: the ShadowCaster passes of the opaque
+// objects (queue <= 2500) from the camera, at the frame's size.
+Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
+                                               std::vector<ObjectState>& objects, const LightValues& no_light,
+                                               const CameraMatrices& camera, const UniformValues& frame_values,
+                                               uint32_t width, uint32_t height, ShaderLibrary& library,
+                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
 
 using BindDraw = std::function<Result<void, RenderError>(VkCommandBuffer, const Draw&, const UniformValues& frame)>;
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace facet::runtime {
@@ -117,22 +118,20 @@ std::vector<std::string> shadow_keywords(const SceneLight& light) {
   return {light.type == LightType::directional ? "SHADOWS_SCREEN" : "SHADOWS_DEPTH"};
 }
 
-Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
-                                                      std::vector<ObjectState>& objects, const LightValues& light,
-                                                      const ShadowView& view, ShaderLibrary& library) {
+Result<DrawListResult, RenderError> caster_draws(const Context& context, const Scene& scene,
+                                                std::vector<ObjectState>& objects, const LightValues& light,
+                                                const std::function<bool(const ObjectState&)>& include,
+                                                const std::string& light_text, const std::string& target,
+                                                ShaderLibrary& library) {
   DrawListResult out;
-  const SceneLight& scene_light = scene.lights[view.light];
-  glm::vec3 camera_position = camera_matrices(scene.camera, 1, 1).position;
-  std::string light_text = light_description(scene, view.light);
   for (ObjectState& object : objects) {
-    if (!reaches(scene, scene_light, object, camera_position)) continue;
+    if (!include(object)) continue;
     bool cast = false;
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       if (!iequals(object.shader->passes[p].ir->tag("LightMode"), "ShadowCaster")) continue;
       DrawRecord record = pass_record(object, p);
       record.light = light_text;
-      record.why = fmt::format("ShadowCaster: depth from {} into its {}x{} shadow map", light_text,
-                               scene.shadow_resolution, scene.shadow_resolution);
+      record.why = "ShadowCaster: depth into " + target;
       FACET_TRY(add_draw(context, scene, library, object, p, &light, {"SHADOWS_DEPTH"}, std::move(record), out));
       cast = true;
       break;  // one caster pass per object, as Unity takes the first
@@ -143,11 +142,24 @@ Result<DrawListResult, RenderError> build_caster_draws(const Context& context, c
       record.light_mode = "ShadowCaster";
       record.light = light_text;
       record.drawn = false;
-      record.why = fmt::format("casts no shadow into the map of {}: its shader has no ShadowCaster pass", light_text);
+      record.why = fmt::format("not in {}: its shader has no ShadowCaster pass", target);
       out.skipped.push_back(std::move(record));
     }
   }
   return out;
+}
+
+Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
+                                                      std::vector<ObjectState>& objects, const LightValues& light,
+                                                      const ShadowView& view, ShaderLibrary& library) {
+  const SceneLight& scene_light = scene.lights[view.light];
+  glm::vec3 camera_position = camera_matrices(scene.camera, 1, 1).position;
+  std::string light_text = light_description(scene, view.light);
+  return caster_draws(
+      context, scene, objects, light,
+      [&](const ObjectState& o) { return reaches(scene, scene_light, o, camera_position); }, light_text,
+      fmt::format("the {}x{} shadow map of {}", scene.shadow_resolution, scene.shadow_resolution, light_text),
+      library);
 }
 
 }  // namespace facet::runtime

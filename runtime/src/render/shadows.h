@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,15 @@ bool samples_shadow_map(const std::vector<std::string>& keywords);
 
 // The shadow keywords a pass with this light asks for ({} without shadows).
 std::vector<std::string> shadow_keywords(const SceneLight& light);
+
+// The ShadowCaster draws (SHADOWS_DEPTH, with `light`) of the objects that
+// `include` takes; those without such a pass are listed in out.skipped as
+// not in `target` ("the camera depth texture").
+Result<DrawListResult, RenderError> caster_draws(const Context& context, const Scene& scene,
+                                                std::vector<ObjectState>& objects, const LightValues& light,
+                                                const std::function<bool(const ObjectState&)>& include,
+                                                const std::string& light_text, const std::string& target,
+                                                ShaderLibrary& library);
 
 // The ShadowCaster draws of `objects` into the map of `view`: every object
 // whose shader has a ShadowCaster pass and whose bounds reach the light's

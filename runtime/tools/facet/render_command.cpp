@@ -28,6 +28,10 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
                      "textures from files: {}\n",
                      f.stats.draws, f.stats.additive_draws, f.stats.triangles, f.stats.pipelines,
                      f.stats.variants_compiled, f.stats.shaders_loaded, f.stats.textures_loaded);
+  if (f.stats.shadow_maps || f.stats.depth_texture_draws) {
+    out << fmt::format("shadow maps: {} ({} caster draws), camera depth texture: {} draws\n", f.stats.shadow_maps,
+                       f.stats.shadow_draws, f.stats.depth_texture_draws);
+  }
   if (f.stats.frame_ms.size() > 1) {
     std::vector<double> host = f.stats.frame_ms, gpu_frames = f.stats.frame_gpu_ms;
     std::sort(host.begin(), host.end());

@@ -53,10 +53,11 @@ struct DrawRecord {
 };
 
 struct RenderStats {
-  uint64_t draws = 0;               // shadow-caster draws included
+  uint64_t draws = 0;               // shadow-map and depth-texture draws included
   uint64_t additive_draws = 0;
   uint64_t shadow_maps = 0;         // lights whose shadow map was rendered
   uint64_t shadow_draws = 0;        // ShadowCaster draws into them
+  uint64_t depth_texture_draws = 0; // ShadowCaster draws into the camera depth texture (objects sample it)
   uint64_t triangles = 0;
   uint64_t pipelines = 0;          // graphics pipelines created
   uint64_t variants_compiled = 0;  // (pass, variant) pairs compiled
