@@ -64,6 +64,10 @@ void UniformValues::set_vector(const std::string& name, float x, float y, float 
 
 void UniformValues::set_matrix(const std::string& name, const float* m) { values_[name].assign(m, m + 16); }
 
+void UniformValues::assign(const UniformValues& other) {
+  for (const auto& [name, value] : other.values_) values_[name] = value;
+}
+
 const std::vector<float>* UniformValues::find(const std::string& name) const {
   auto it = values_.find(name);
   return it == values_.end() ? nullptr : &it->second;
@@ -108,24 +112,21 @@ std::vector<std::string> fill_block(std::span<std::byte> out, const UniformBlock
   return missing;
 }
 
-std::vector<size_t> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer) {
-  std::vector<size_t> out;
+std::vector<MemberSource> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer) {
+  std::vector<MemberSource> out;
   for (size_t m = 0; m < block.members.size(); ++m) {
     for (size_t l = 0; l < layers.size(); ++l) {
-      if (!layers[l] || !layers[l]->find(block.members[m].name)) continue;
-      if (l == layer) out.push_back(m);
+      const std::vector<float>* value = layers[l] ? layers[l]->find(block.members[m].name) : nullptr;
+      if (!value) continue;
+      if (l == layer) out.push_back({m, value});
       break;
     }
   }
   return out;
 }
 
-void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<size_t>& members,
-                    const UniformValues& values) {
-  for (size_t m : members) {
-    const BlockMember& member = block.members[m];
-    if (const std::vector<float>* value = values.find(member.name)) write_member(out, member, *value);
-  }
+void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<MemberSource>& members) {
+  for (const MemberSource& m : members) write_member(out, block.members[m.member], *m.value);
 }
 
 }  // namespace facet::runtime

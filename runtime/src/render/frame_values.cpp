@@ -101,7 +101,7 @@ glm::vec3 linear_color(const Vec3& c) {
   return {float(srgb_to_linear(c[0])), float(srgb_to_linear(c[1])), float(srgb_to_linear(c[2]))};
 }
 
-UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height) {
+UniformValues per_frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height) {
   UniformValues u;
   const SceneCamera& c = scene.camera;
   set(u, "unity_MatrixV", cam.view);
@@ -126,6 +126,11 @@ UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int 
   set(u, "_SinTime", {std::sin(t / 8), std::sin(t / 4), std::sin(t / 2), std::sin(t)});
   set(u, "_CosTime", {std::cos(t / 8), std::cos(t / 4), std::cos(t / 2), std::cos(t)});
   set(u, "unity_DeltaTime", {dt, 1 / dt, dt, 1 / dt});
+  return u;
+}
+
+UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height) {
+  UniformValues u = per_frame_uniforms(scene, cam, width, height);
   const SceneFog& fog = scene.fog;
   glm::vec3 fog_color = linear_color({fog.color[0], fog.color[1], fog.color[2]});
   set(u, "unity_FogColor", glm::vec4(fog_color, fog.color[3]));

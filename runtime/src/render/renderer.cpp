@@ -379,12 +379,13 @@ struct Recorder {
   const ShadowPasses* shadows = nullptr;  // _ShadowMapTexture of the draw's light
   // What the first frame allocated and wrote for each draw. Later frames
   // bind the same sets and rewrite in place (the previous frame has
-  // finished) the members that come from the frame layer, which is rebuilt
-  // every frame; the object's, light's and material's values stay as written.
+  // finished) the members that come from the frame layer, which is
+  // recomputed every frame; the object's, light's and material's values stay
+  // as written.
   struct KeptBlock {
     const UniformBlock* block;
     std::span<std::byte> bytes;
-    std::vector<size_t> frame_members;
+    std::vector<MemberSource> frame_members;
   };
   struct Retained {
     std::array<VkDescriptorSet, kSetCount> sets{};
@@ -393,14 +394,15 @@ struct Recorder {
   static constexpr size_t kFrameLayer = 3;  // in the layers of bind()
   std::map<const Draw*, Retained> retained;
 
+  std::vector<std::byte> zeros;
   void push_zeros(VkCommandBuffer commands, const GpuProgram& program) {
     if (!program.push_constant_bytes) return;
-    std::vector<std::byte> zeros(program.push_constant_bytes);
+    if (zeros.size() < program.push_constant_bytes) zeros.resize(program.push_constant_bytes);
     vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
   }
 
-  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r, const UniformValues& frame) {
-    for (const KeptBlock& k : r.blocks) refill_members(k.bytes, *k.block, k.frame_members, frame);
+  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r) {
+    for (const KeptBlock& k : r.blocks) refill_members(k.bytes, *k.block, k.frame_members);
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!r.sets[set]) continue;
       vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &r.sets[set], 0, nullptr);
@@ -439,7 +441,7 @@ struct Recorder {
                                  const UniformValues& frame, CapturedDraw* captured = nullptr) {
     GpuProgram& program = *draw.variant->program;
     if (auto it = retained.find(&draw); it != retained.end()) {
-      rebind(commands, program, it->second, frame);
+      rebind(commands, program, it->second);
       return {};
     }
     UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
@@ -682,7 +684,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   // Objects that sample _CameraDepthTexture get Unity's depth texture: the
   // opaque objects' ShadowCaster passes from the camera, before the scene.
   if (std::any_of(list->draws.begin(), list->draws.end(), [](const Draw& d) { return samples(d, "_CameraDepthTexture"); })) {
-    FACET_TRY(prepare_camera_depth(context, scene, objects, lights.none, camera, frame_values, uint32_t(frame.width),
+    FACET_TRY(prepare_camera_depth(context, scene, objects, lights.none, camera, uint32_t(frame.width),
                                    uint32_t(frame.height), library, fo.cache, shadows, frame.stats.pipelines));
   }
   if (options.capture && !shadows.maps.empty()) {
@@ -738,7 +740,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
         commands, shadows, objects,
         [&](VkCommandBuffer c, const Draw& d, const UniformValues& light_frame) {
           return recorder.bind(c, d, objects[d.object], light_frame);
-        });
+        },
+        frame_values);
     if (!shadow_triangles) {
       failed = shadow_triangles.error();
       return;
@@ -822,7 +825,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   for (int f = 0; f < options.frames; ++f) {
     Clock::time_point frame_start = Clock::now();
     frame.stats.triangles = 0;
-    if (f > 0) frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
+    // In place: the kept blocks point at these values.
+    if (f > 0) frame_values.assign(per_frame_uniforms(scene, camera, frame.width, frame.height));
     VkResultOf<void> submitted = submitter.submit([&](VkCommandBuffer c) { record(c, f == 0 && capture); });
     frame.stats.frame_ms.push_back(ms_since(frame_start));
     if (failed) return unexpected(*failed);

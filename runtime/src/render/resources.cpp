@@ -236,6 +236,7 @@ Result<const Image*, std::string> Resources::sky_environment(const SceneSky& sky
   VkResultOf<void> up = upload_image(context_, *image, spans);
   if (!up) return unexpected(describe(up.error()));
   environment_ = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), kFace, kFace});
+  if (keep_pixels_) environment_->mips = std::move(mips);
   return &environment_->image;
 }
 

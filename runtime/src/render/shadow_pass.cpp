@@ -168,8 +168,7 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
 
 Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
                                                std::vector<ObjectState>& objects, const LightValues& no_light,
-                                               const CameraMatrices& camera, const UniformValues& frame_values,
-                                               uint32_t width, uint32_t height, ShaderLibrary& library,
+                                               const CameraMatrices& camera, uint32_t width, uint32_t height, ShaderLibrary& library,
                                                VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
   out.device = context.device();
   FACET_TRY(ensure_render_pass(context.device(), out));
@@ -183,7 +182,6 @@ Result<void, RenderError> prepare_camera_depth(const Context& context, const Sce
                    "the camera depth texture", library);
   if (!casters) return unexpected(casters.error());
   map->casters = std::move(*casters);
-  map->frame = frame_values;
   FACET_TRY(make_target(context, out.render_pass, *map));
   FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
   out.maps.push_back(std::move(map));
@@ -191,7 +189,8 @@ Result<void, RenderError> prepare_camera_depth(const Context& context, const Sce
 }
 
 Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
-                                                 const std::vector<ObjectState>& objects, const BindDraw& bind) {
+                                                 const std::vector<ObjectState>& objects, const BindDraw& bind,
+                                                 const UniformValues& camera_frame) {
   uint64_t triangles = 0;
   for (const auto& map : passes.maps) {
     VkClearValue clear{};
@@ -206,13 +205,13 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
     VkViewport viewport{0, 0, float(map->width), float(map->height), 0, 1};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
-    Result<void, RenderError> failed;
-    for (size_t i = 0; i < map->casters.draws.size() && failed; ++i) {
+    Result<void, RenderError> bound;
+    for (size_t i = 0; i < map->casters.draws.size() && bound; ++i) {
       const Draw& d = map->casters.draws[i];
       const ObjectState& object = objects[d.object];
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, map->pipelines[i]);
-      failed = bind(commands, d, map->frame);
-      if (!failed) break;
+      bound = bind(commands, d, map->light ? map->frame : camera_frame);
+      if (!bound) break;
       VkBuffer vb = object.mesh->vertices.handle();
       VkDeviceSize offset = 0;
       vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
@@ -221,7 +220,7 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
       triangles += object.mesh->index_count / 3;
     }
     vkCmdEndRenderPass(commands);
-    if (!failed) return unexpected(failed.error());
+    if (!bound) return unexpected(bound.error());
   }
   return triangles;
 }

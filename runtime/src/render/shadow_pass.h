@@ -23,7 +23,7 @@ struct ShadowMap {
   const LightValues* light = nullptr;  // null for the camera depth texture
   uint32_t width = 0, height = 0;
   DrawListResult casters;
-  UniformValues frame;  // the frame uniforms with the light as the camera
+  UniformValues frame;  // the frame uniforms with the light as the camera (unused for the camera depth texture)
   Image depth;
   Image unused_color;  // R8, never written (see make_depth_pass)
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
@@ -55,14 +55,15 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
 // objects (queue <= 2500) from the camera, at the frame's size.
 Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
                                                std::vector<ObjectState>& objects, const LightValues& no_light,
-                                               const CameraMatrices& camera, const UniformValues& frame_values,
-                                               uint32_t width, uint32_t height, ShaderLibrary& library,
+                                               const CameraMatrices& camera, uint32_t width, uint32_t height, ShaderLibrary& library,
                                                VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
 
 using BindDraw = std::function<Result<void, RenderError>(VkCommandBuffer, const Draw&, const UniformValues& frame)>;
 
-// Records every map's pass; returns the triangles drawn.
+// Records every map's pass; the camera depth texture's draws see
+// `camera_frame`, the frame's own values. Returns the triangles drawn.
 Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
-                                                 const std::vector<ObjectState>& objects, const BindDraw& bind);
+                                                 const std::vector<ObjectState>& objects, const BindDraw& bind,
+                                                 const UniformValues& camera_frame);
 
 }  // namespace facet::runtime

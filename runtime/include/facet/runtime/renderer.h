@@ -25,9 +25,11 @@ struct FrameCapture;
 struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's size
   std::string cache_dir;      // the compiler's cache folder; empty: none
-  // Frames rendered after loading and compiling once, for timing: each
-  // rebuilds the frame uniforms, descriptor sets and uniform data of every
-  // draw, records, submits and waits. The image is the last frame's.
+  // Frames rendered after loading and compiling once, for timing: the first
+  // writes every draw's descriptor sets and uniform data; each later one
+  // recomputes the camera and time uniforms, rewrites the members that come
+  // from the frame layer, records, submits and waits. The image is the last
+  // frame's.
   int frames = 1;
   FrameCapture* capture = nullptr;  // filled from the first frame (facet/runtime/frame_capture.h)
   // Called after each frame's wait, outside its timing: a benchmark runs

@@ -24,6 +24,9 @@ class UniformValues {
   void set_matrix(const std::string& name, const float* column_major16);
   void set_elements(const std::string& name, std::vector<float> floats) { values_[name] = std::move(floats); }
   const std::vector<float>* find(const std::string& name) const;
+  // Sets every value of `other`, keeping this table's entries: pointers from
+  // find() stay valid (a renderer updates its frame values this way).
+  void assign(const UniformValues& other);
 
  private:
   std::unordered_map<std::string, std::vector<float>> values_;
@@ -37,12 +40,18 @@ using UniformLayers = std::vector<const UniformValues*>;
 // struct members are left 0. Returns the members that nothing filled.
 std::vector<std::string> fill_block(std::span<std::byte> out, const UniformBlock& block, const UniformLayers& layers);
 
-// The members (indices into block.members) whose value comes from
-// layers[layer], the first layer that has them; and rewriting just those from
-// `values`: a renderer refills the per-frame members of a kept block this way.
-std::vector<size_t> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer);
-void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<size_t>& members,
-                    const UniformValues& values);
+// A member of a block (index into block.members) and its value in a layer.
+struct MemberSource {
+  size_t member = 0;
+  const std::vector<float>* value = nullptr;
+};
+
+// The members whose value comes from layers[layer] (the first layer that
+// has them), and rewriting just those: a renderer refills the per-frame
+// members of a kept block this way, with no lookup by name. The pointers
+// stay valid while that layer lives and is only updated through assign().
+std::vector<MemberSource> members_from_layer(const UniformBlock& block, const UniformLayers& layers, size_t layer);
+void refill_members(std::span<std::byte> out, const UniformBlock& block, const std::vector<MemberSource>& members);
 
 // One member's bytes from one value (exposed for tests).
 void write_member(std::span<std::byte> out, const BlockMember& member, const std::vector<float>& value);
