@@ -12,7 +12,6 @@ namespace facet::runtime {
 namespace {
 
 using test_support::example_shader;
-using test_support::write_scene;
 
 std::array<int, 3> pixel(const RenderedFrame& f, int x, int y) {
   const uint8_t* p = &f.ldr[(size_t(y) * f.width + x) * 4];
@@ -37,17 +36,7 @@ std::string water_scene(float fade, bool water = true) {
   return json + "]}";
 }
 
-class DepthTextureTest : public test_support::LavapipeTest {
- protected:
-  RenderedFrame render(const std::string& name, const std::string& json) {
-    auto scene = parse_scene(json, write_scene(name, json));
-    EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return {};
-    auto frame = render_scene(context(), *scene, {});
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
-};
+using DepthTextureTest = test_support::RenderTest;
 
 TEST_F(DepthTextureTest, ASamplingShaderGetsTheOpaqueCastersDepthFromTheCamera) {
   RenderedFrame f = render("water", water_scene(0.5f));

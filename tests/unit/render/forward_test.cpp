@@ -14,19 +14,8 @@ namespace {
 using test_support::count_draws;
 using test_support::object_json;
 using test_support::small_scene;
-using test_support::write_scene;
 
-class ForwardTest : public test_support::LavapipeTest {
- protected:
-  RenderedFrame render(const std::string& name, const std::string& json) {
-    auto scene = parse_scene(json, write_scene(name, json));
-    EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return {};
-    auto frame = render_scene(context(), *scene, {});
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
-};
+using ForwardTest = test_support::RenderTest;
 
 std::array<int, 3> pixel(const RenderedFrame& f, int x, int y) {
   const uint8_t* p = &f.ldr[(size_t(y) * f.width + x) * 4];

@@ -17,7 +17,6 @@ namespace facet::runtime {
 namespace {
 
 using test_support::example_shader;
-using test_support::write_scene;
 
 struct Scan {
   size_t non_finite = 0, negative = 0, covered = 0;
@@ -45,17 +44,7 @@ std::string sphere(double x, double y, double smoothness, double metallic) {
                      x, y, example_shader("SurfaceStandard.shader"), smoothness, metallic);
 }
 
-class ImageFurnaceTest : public test_support::LavapipeTest {
- protected:
-  RenderedFrame render(const std::string& name, const std::string& json) {
-    auto scene = parse_scene(json, write_scene(name, json));
-    EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return {};
-    auto frame = render_scene(context(), *scene, {});
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
-};
+using ImageFurnaceTest = test_support::RenderTest;
 
 std::string grid_scene(int metallic) {
   std::string objects;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "facet/runtime/renderer.h"
+#include "facet/runtime/scene.h"
 #include "unit/runtime/context_fixture.h"
 
 namespace facet::runtime::test_support {
@@ -56,6 +57,24 @@ inline std::string object_json(const std::string& mesh, const std::string& shade
   return R"({"mesh": ")" + mesh + R"(", "position": )" + position + R"(, "material": {"shader": ")" +
          example_shader(shader) + "\"" + extra + "}}";
 }
+
+// Lavapipe tests that render scene texts: `name` names the file the scene
+// is written to (relative paths in it resolve there).
+class RenderTest : public LavapipeTest {
+ protected:
+  static Result<RenderedFrame, RenderError> try_render(const std::string& name, const std::string& json,
+                                                       const RenderOptions& options = {}) {
+    auto scene = parse_scene(json, write_scene(name, json));
+    EXPECT_TRUE(scene) << scene.error().message;
+    if (!scene) return unexpected(RenderError{"the scene does not parse"});
+    return render_scene(context(), *scene, options);
+  }
+  static RenderedFrame render(const std::string& name, const std::string& json, const RenderOptions& options = {}) {
+    auto frame = try_render(name, json, options);
+    EXPECT_TRUE(frame) << frame.error().message;
+    return frame ? std::move(*frame) : RenderedFrame{};
+  }
+};
 
 inline size_t count_draws(const RenderedFrame& frame, const std::string& light_mode, bool drawn = true) {
   size_t n = 0;

@@ -14,7 +14,6 @@ namespace facet::runtime {
 namespace {
 
 using test_support::example_shader;
-using test_support::write_scene;
 
 int grey(const RenderedFrame& f, int x, int y) { return f.ldr[(size_t(y) * f.width + x) * 4 + 1]; }
 
@@ -40,20 +39,7 @@ std::string sun(const std::string& shadows) {
   return R"([{"type": "directional", "rotation": [60, 0, 0], "intensity": 1.5)" + shadows + "}]";
 }
 
-class ShadowsTest : public test_support::LavapipeTest {
- protected:
-  Result<RenderedFrame, RenderError> try_render(const std::string& name, const std::string& json, RenderOptions o = {}) {
-    auto scene = parse_scene(json, write_scene(name, json));
-    EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return unexpected(RenderError{"no scene"});
-    return render_scene(context(), *scene, o);
-  }
-  RenderedFrame render(const std::string& name, const std::string& json, RenderOptions o = {}) {
-    auto frame = try_render(name, json, o);
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
-};
+using ShadowsTest = test_support::RenderTest;
 
 size_t count_if(const RenderedFrame& f, const std::function<bool(const DrawRecord&)>& pred) {
   return size_t(std::count_if(f.draws.begin(), f.draws.end(), pred));

@@ -47,17 +47,7 @@ constexpr const char* kTopCamera = R"({"position": [0, 3, 0], "look_at": [0, 0, 
 constexpr const char* kTopOrtho =
     R"({"type": "orthographic", "size": 2, "position": [0, 3, 0], "look_at": [0, 0, 0], "clear_color": [0, 0, 0]})";
 
-class SkyCookieTest : public test_support::LavapipeTest {
- protected:
-  RenderedFrame render(const std::string& name, const std::string& json) {
-    auto scene = parse_scene(json, write_scene(name, json));
-    EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return {};
-    auto frame = render_scene(context(), *scene, {});
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
-};
+using SkyCookieTest = test_support::RenderTest;
 
 int to_8bit(float linear) { return int(std::lround(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)) * 255.0)); }
 
