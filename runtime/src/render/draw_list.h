@@ -39,6 +39,7 @@ struct ObjectState {
   float distance = 0;  // from the camera to the bounds' centre
   bool mirrored = false;
   int queue = 2000;
+  bool background = false;  // the camera's sky (background.h): no shadow or depth caster
 };
 
 struct Draw {

@@ -9,9 +9,6 @@
 #include "render/frame_values.h"
 
 namespace facet::runtime {
-namespace {
-
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
 
 // The built-in quad (-0.5..0.5, uv 0..1) moved to 0..1 and a view-projection
 // taking that square to the whole of Vulkan's clip space. uv.y = 0 lands on
@@ -27,6 +24,11 @@ UniformValues blit_uniforms() {
   v.set_matrix("unity_MatrixInvV", glm::value_ptr(identity));
   return v;
 }
+
+namespace {
+
+RenderError error(std::string message) { return RenderError{std::move(message)}; }
+
 
 Result<void, RenderError> texel_sizes(Material& material, Resources& resources, const Scene& scene,
                                       const ScenePostEffect& effect) {

@@ -27,6 +27,11 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
                                                                  GpuMesh* quad, const LightValues* none, int width,
                                                                  int height);
 
+// The draw layer of a full-screen quad: the built-in quad's object matrix
+// and a view-projection that takes it to the whole of clip space (the
+// frame layer's other camera values stay the camera's).
+UniformValues blit_uniforms();
+
 // Whether the draw's program has a texture resource called `name`.
 bool samples(const Draw& draw, std::string_view name);
 

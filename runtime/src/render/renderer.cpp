@@ -14,6 +14,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/vulkan_context.h"
+#include "render/background.h"
 #include "render/capture.h"
 #include "render/draw_list.h"
 #include "render/post.h"
@@ -624,11 +625,17 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
   if (!list) return unexpected(list.error());
   std::unique_ptr<GpuMesh> quad;
-  std::unique_ptr<PostChain> post;
-  if (!scene.post.empty()) {
+  if (!scene.post.empty() || scene.camera.clear_sky) {
     Result<GpuMesh, RenderError> q = upload_mesh(context, *builtin_mesh("quad"));
     if (!q) return unexpected(q.error());
     quad = std::make_unique<GpuMesh>(std::move(*q));
+  }
+  SceneObject sky_source;
+  if (scene.camera.clear_sky) {
+    FACET_TRY(add_sky_background(context, scene, library, quad.get(), &lights.none, sky_source, objects, *list));
+  }
+  std::unique_ptr<PostChain> post;
+  if (!scene.post.empty()) {
     auto chain = build_post_chain(context, scene, library, resources, quad.get(), &lights.none, frame.width, frame.height);
     if (!chain) return unexpected(chain.error());
     post = std::move(*chain);

@@ -125,7 +125,7 @@ Result<DrawListResult, RenderError> caster_draws(const Context& context, const S
                                                 ShaderLibrary& library) {
   DrawListResult out;
   for (ObjectState& object : objects) {
-    if (!include(object)) continue;
+    if (object.background || !include(object)) continue;
     bool cast = false;
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       if (!iequals(object.shader->passes[p].ir->tag("LightMode"), "ShadowCaster")) continue;

@@ -123,7 +123,7 @@ struct Reader {
 
   SceneCamera camera(const json& j, const std::string& path) const {
     check_keys(j, path, {"type", "position", "rotation", "look_at", "fov", "size", "near", "far", "clear_color",
-                         "exposure"});
+                         "clear", "exposure"});
     SceneCamera c;
     c.transform = transform(j, path);
     if (j.contains("type")) {
@@ -137,6 +137,9 @@ struct Reader {
     if (j.contains("far")) c.far = positive(member(j, "far"), join(path, "far"));
     if (c.far <= c.near) throw Bad{join(path, "far"), "expected far > near"};
     if (j.contains("clear_color")) c.clear_color = color(member(j, "clear_color"), join(path, "clear_color"));
+    if (j.contains("clear")) {
+      c.clear_sky = word<bool>(member(j, "clear"), join(path, "clear"), {{"color", false}, {"sky", true}});
+    }
     if (j.contains("exposure")) c.exposure = positive(member(j, "exposure"), join(path, "exposure"));
     return c;
   }
@@ -385,6 +388,9 @@ struct Reader {
     if (!objects.is_array()) throw Bad{"objects", "expected a list of objects"};
     for (size_t i = 0; i < objects.size(); ++i) s.objects.push_back(object(objects[i], index("objects", i)));
     if (j.contains("ambient")) ambient(member(j, "ambient"), s);
+    if (s.camera.clear_sky && !s.sky) {
+      throw Bad{"camera.clear", "\"sky\" needs a procedural sky: give ambient as {\"sky\": {...}}"};
+    }
     if (j.contains("fog")) s.fog = fog(member(j, "fog"), "fog");
     if (j.contains("tonemap")) {
       s.tonemap = word<Tonemap>(member(j, "tonemap"), "tonemap",

@@ -83,7 +83,7 @@ TEST_F(FramesTest, CaptureHoldsEveryDrawWithItsUniformBytesAndTextures) {
 }
 
 TEST_F(FramesTest, ABareVulkanLoopDrawsTheCaptureToTheSamePixels) {
-  for (const char* name : {"phong_lights.json", "textured.json", "transparency.json"}) {
+  for (const char* name : {"phong_lights.json", "textured.json", "transparency.json", "sky_ambient.json"}) {
     SCOPED_TRACE(name);
     Scene scene = example(name);
     FrameCapture capture;

@@ -44,6 +44,7 @@ struct SceneCamera {
   float size = 5;          // orthographic half height
   float near = 0.3f, far = 1000;
   Vec4 clear_color{0.19f, 0.30f, 0.47f, 1};  // sRGB-authored, as in Unity
+  bool clear_sky = false;  // "clear": "sky": the ambient's procedural sky behind everything
   float exposure = 1;
 };
 

@@ -1,0 +1,56 @@
+#include "render/background.h"
+
+#include <fmt/format.h>
+
+#include "facet/compiler.h"
+#include "render/post.h"
+
+namespace facet::runtime {
+namespace {
+
+SceneProperty colour(const std::string& name, const std::string& key, const Vec3& c) {
+  return {name, "ambient.sky." + key, {c[0], c[1], c[2], 1}, std::nullopt};
+}
+
+}  // namespace
+
+Result<void, RenderError> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
+                                             GpuMesh* quad, const LightValues* none, SceneObject& source,
+                                             std::vector<ObjectState>& objects, DrawListResult& list) {
+  const SceneSky& sky = *scene.sky;
+  source.name = "procedural sky";
+  source.json_path = "camera.clear";
+  source.mesh = "quad";
+  source.material.shader = default_stdlib_dir() + "/Shaders/ProceduralSky.shader";
+  source.material.json_path = "camera.clear";
+  source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
+                                colour("_Ground", "ground", sky.ground),
+                                {"_Intensity", "ambient.sky.intensity", {sky.intensity}, std::nullopt}};
+  Result<ShaderAsset*, std::string> shader = library.load(source.material.shader);
+  if (!shader) {
+    return unexpected(RenderError{fmt::format("{}: camera.clear: the sky shader {} does not compile:\n{}", scene.path,
+                                              source.material.shader, shader.error())});
+  }
+  ObjectState s;
+  s.index = objects.size();
+  s.scene = &source;
+  s.shader = *shader;
+  Result<Material, MaterialError> material = make_material(s.shader->shader, source.material, scene.path);
+  if (!material) return unexpected(RenderError{material.error().message});
+  s.material = std::move(*material);
+  s.mesh = quad;
+  s.draw = blit_uniforms();
+  s.queue = 1000;  // Background
+  s.background = true;
+  objects.push_back(std::move(s));
+  DrawListResult sky_list;
+  DrawRecord record = pass_record(objects.back(), 0);
+  record.why = "camera.clear is \"sky\": the procedural sky of ambient.sky behind everything";
+  FACET_TRY(add_draw(context, scene, library, objects.back(), 0, none, {}, std::move(record), sky_list));
+  list.draws.insert(list.draws.begin(), std::move(sky_list.draws.front()));
+  list.compiled.insert(list.compiled.end(), sky_list.compiled.begin(), sky_list.compiled.end());
+  list.variants_compiled += sky_list.variants_compiled;
+  return {};
+}
+
+}  // namespace facet::runtime
