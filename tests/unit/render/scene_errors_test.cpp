@@ -129,5 +129,24 @@ TEST(RenderCommand, WritesAPngWithValidationOnAndPrintsStatsAndExplain) {
   EXPECT_NE(r.out.find("why: no LightMode: drawn once"), std::string::npos) << r.out;
 }
 
+TEST(RenderCommand, FramesPrintsTheMedianFrameTime) {
+  std::string png = output_path("frames");
+  Outcome r = facet_render({write_scene("frames", small_scene("[" + object_json("sphere", "Unlit.shader") + "]")), "-o",
+                            png, "--stats", "--frames", "3"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("frames: 3, frame time median"), std::string::npos) << r.out;
+}
+
+TEST(RenderCommand, FramesOutOfRangeIsAnErrorAndWritesNothing) {
+  for (const char* frames : {"0", "-2", "many"}) {
+    std::string png = output_path("bad_frames");
+    std::filesystem::remove(png);
+    Outcome r = facet_render({write_scene("bad_frames", small_scene("[]")), "-o", png, "--frames", frames});
+    EXPECT_EQ(r.code, 1) << frames;
+    EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(png));
+  }
+}
+
 }  // namespace
 }  // namespace facet::runtime
