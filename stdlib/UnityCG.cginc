@@ -208,19 +208,19 @@ float4 UnityEncodeCubeShadowDepth(float z) { return float4(z, z, z, z); }
 float UnityDecodeCubeShadowDepth(float4 vals) { return vals.r; }
 
 // Clip position of an object-space vertex pushed back along the world
-// normal by unity_LightShadowBias.z (normal offset), for lights other than
-// directional facing it head-on less.
+// normal by unity_LightShadowBias.z (normal offset, world units), more the
+// more the surface faces away from the light. Branch-free (an offset of 0
+// moves nothing): lavapipe leaks JIT code on every draw of a vertex shader
+// with Unity's `if (unity_LightShadowBias.z != 0)`; the sine is clamped so
+// that rounding (|cos| a hair above 1) cannot make it NaN.
 float4 UnityClipSpaceShadowCasterPos(float4 vertex, float3 normal)
 {
     float4 wPos = mul(unity_ObjectToWorld, vertex);
-    if (unity_LightShadowBias.z != 0.0) {
-        float3 wNormal = UnityObjectToWorldNormal(normal);
-        float3 wLight = normalize(UnityWorldSpaceLightDir(wPos.xyz));
-        float shadowCos = dot(wNormal, wLight);
-        float shadowSine = sqrt(1.0 - shadowCos * shadowCos);
-        float normalBias = unity_LightShadowBias.z * shadowSine;
-        wPos.xyz -= wNormal * normalBias;
-    }
+    float3 wNormal = UnityObjectToWorldNormal(normal);
+    float3 wLight = normalize(UnityWorldSpaceLightDir(wPos.xyz));
+    float shadowCos = dot(wNormal, wLight);
+    float shadowSine = sqrt(saturate(1.0 - shadowCos * shadowCos));
+    wPos.xyz -= wNormal * (unity_LightShadowBias.z * shadowSine);
     return mul(UNITY_MATRIX_VP, wPos);
 }
 float4 UnityClipSpaceShadowCasterPos(float3 vertex, float3 normal)

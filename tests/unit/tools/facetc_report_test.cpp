@@ -25,7 +25,7 @@ TEST_F(FacetcTest, ReportFormatsAndFolders) {
   auto doc = nlohmann::json::parse(json.out);
   EXPECT_EQ(doc["format"], "facet-variant-report");
   EXPECT_GE(doc["shaders"].size(), 8u) << "every example in the folder";
-  EXPECT_EQ(doc["shaders"][0]["name"], "Examples/Diffuse") << "sorted by path";
+  EXPECT_EQ(doc["shaders"][0]["name"], "Examples/DepthFade") << "sorted by path (DepthFade.shader first)";
 
   FacetcRun html = facetc({"--report=html", "-o", "report.html", example("PhongMultiLight.shader")});
   ASSERT_EQ(html.exit_code, 0) << html.err;
