@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "facet/markup.h"
 #include "facet/report.h"
 
 namespace facet::report {
@@ -14,20 +15,6 @@ namespace {
 // Colours the chart tests look for in a screenshot.
 constexpr const char* kSetBarColor = "#2f6fdf";
 constexpr const char* kTimeBarColor = "#e8930c";
-
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 struct Bar {
   std::string label, value_text;
@@ -52,11 +39,11 @@ std::string bar_chart(const std::string& css_class, const char* color, const std
     int y = int(i) * row + 4;
     double w = max > 0 ? std::max(2.0, b.value / max * bar_width) : 2.0;
     svg += fmt::format(R"(<text x="{}" y="{}" text-anchor="end" font-size="13">{}</text>)", label_width - 8, y + 16,
-                       escape(b.label));
+                       xml_escape(b.label));
     svg += fmt::format(R"(<rect class="bar" x="{}" y="{}" width="{:.1f}" height="{}" fill="{}"/>)", label_width, y, w,
                        row - 8, color);
     svg += fmt::format(R"(<text x="{:.1f}" y="{}" font-size="13">{}</text>)", label_width + w + 6, y + 16,
-                       escape(b.value_text));
+                       xml_escape(b.value_text));
   }
   return svg + "</svg>\n";
 }
@@ -75,7 +62,7 @@ std::string ladder_table(const PassReport& p) {
   for (const Ladder& l : p.ladders) {
     t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td><td>{}</td>"
                      "<td>{}</td></tr>\n",
-                     escape(l.scope), l.full.to_string(), l.after_skip.to_string(), l.after_strip,
+                     xml_escape(l.scope), l.full.to_string(), l.after_skip.to_string(), l.after_strip,
                      l.has_materials ? l.after_materials.to_string() : "–", l.programs, l.unique_tokens,
                      l.unique_spirv);
   }
@@ -83,8 +70,8 @@ std::string ladder_table(const PassReport& p) {
 }
 
 std::string pass_section(const PassReport& p) {
-  std::string h = fmt::format("<h3>pass #{}{}{}</h3>\n", p.index, p.name.empty() ? "" : " '" + escape(p.name) + "'",
-                              p.light_mode.empty() ? "" : " (" + escape(p.light_mode) + ")");
+  std::string h = fmt::format("<h3>pass #{}{}{}</h3>\n", p.index, p.name.empty() ? "" : " '" + xml_escape(p.name) + "'",
+                              p.light_mode.empty() ? "" : " (" + xml_escape(p.light_mode) + ")");
   h += ladder_table(p);
   std::vector<Bar> bars;
   for (const KeywordSetRow& s : p.sets) {
@@ -98,15 +85,15 @@ std::string pass_section(const PassReport& p) {
   if (!p.findings.empty()) {
     h += "<ul class=\"findings\">\n";
     for (const Finding& f : p.findings) {
-      h += fmt::format("<li><b>{}</b> <code>{}</code>{}: {}</li>\n", finding_name(f.kind), escape(f.keyword),
-                       f.stage.empty() ? "" : " in " + escape(f.stage), escape(f.detail));
+      h += fmt::format("<li><b>{}</b> <code>{}</code>{}: {}</li>\n", finding_name(f.kind), xml_escape(f.keyword),
+                       f.stage.empty() ? "" : " in " + xml_escape(f.stage), xml_escape(f.detail));
     }
     h += "</ul>\n";
   }
   if (!p.what_ifs.empty()) {
     h += "<table class=\"whatif\"><tr><th>what if</th><th>programs fewer</th><th>seconds saved</th></tr>\n";
     for (const WhatIf& w : p.what_ifs) {
-      h += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td></tr>\n", escape(w.change), w.programs_saved,
+      h += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td></tr>\n", xml_escape(w.change), w.programs_saved,
                        w.seconds_saved);
     }
     h += "</table>\n";
@@ -140,8 +127,8 @@ code { background: #eef1f5; padding: 0 3px; }
     h += "<p class=\"caption\">Compile time per pass</p>\n" + bar_chart("chart-time", kTimeBarColor, pass_times);
   }
   for (const ShaderReport& r : reports) {
-    h += fmt::format("<h2>{}</h2>\n<p><code>{}</code>: {} programs, {} compiled, {:.3f} s</p>\n", escape(r.name),
-                     escape(r.path), r.programs, r.compiled, r.compile_seconds);
+    h += fmt::format("<h2>{}</h2>\n<p><code>{}</code>: {} programs, {} compiled, {:.3f} s</p>\n", xml_escape(r.name),
+                     xml_escape(r.path), r.programs, r.compiled, r.compile_seconds);
     if (r.estimate) {
       h += fmt::format("<p>Estimated before building: ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
                        "from {} sampled).</p>\n",

@@ -6,24 +6,11 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "facet/markup.h"
 #include "facet/runtime/accuracy.h"
 
 namespace facet::runtime::accuracy {
 namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 bool on_chart(const StudyRow& r) { return r.error > 0 && std::isfinite(r.error) && r.ns_per_eval && *r.ns_per_eval > 0; }
 
@@ -75,10 +62,10 @@ std::string chart(const Study& study) {
   for (const StudyRow* r : points) {
     bool best = pareto(*r, study.rows);
     svg += fmt::format(R"svg(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="{}" class="point"><title>{}: error {:.3g}, {:.3g} ns</title></circle>)svg",
-                       px(*r->ns_per_eval), py(r->error), best ? "#d62728" : "#1f77b4", escape(r->id), r->error,
+                       px(*r->ns_per_eval), py(r->error), best ? "#d62728" : "#1f77b4", xml_escape(r->id), r->error,
                        *r->ns_per_eval);
     svg += fmt::format(R"svg(<text x="{:.1f}" y="{:.1f}" font-size="9">{}</text>)svg", px(*r->ns_per_eval) + 6,
-                       py(r->error) - 4, escape(r->id));
+                       py(r->error) - 4, xml_escape(r->id));
   }
   return svg + "</svg>\n<p>Red: Pareto-optimal within its group (nothing in the group is both cheaper and more accurate).</p>\n";
 }
@@ -118,7 +105,7 @@ std::string study_html(const Study& study) {
   html += "<h1>Accuracy versus cost</h1>\n";
   html += fmt::format("<p>Device: {}. Timed pass: {}x{} invocations, {} evaluations each, median of {} dispatches, "
                       "minus a null pass.</p>\n",
-                      escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
+                      xml_escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
   html += chart(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
@@ -126,9 +113,9 @@ std::string study_html(const Study& study) {
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td>"
                         "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
-                        escape(r.group), escape(r.id), escape(r.name), escape(r.reference), escape(r.metric),
-                        r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), escape(r.detail),
-                        escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
+                        xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
+                        r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), xml_escape(r.detail),
+                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
   }
   return html + "</table>\n</body></html>\n";
 }
