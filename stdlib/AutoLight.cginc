@@ -21,9 +21,7 @@
 #define unityShadowCoord3 float3
 #define unityShadowCoord4 float4
 #define unityShadowCoord4x4 float4x4
-#define UNITY_DECLARE_SHADOWMAP(tex) sampler2D tex
-#define UNITY_SAMPLE_SHADOW(tex, coord) (tex2D(tex, (coord).xy).r >= (coord).z ? 1.0 : 0.0)
-#define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, (coord).xyz / (coord).w)
+// UNITY_DECLARE_SHADOWMAP, UNITY_SAMPLE_SHADOW(_PROJ): HLSLSupport.cginc.
 
 // ---- shadows ------------------------------------------------------------------------
 // SHADOW_COORDS adds the light-space coordinate; TRANSFER_SHADOW fills it from

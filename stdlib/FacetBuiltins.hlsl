@@ -64,7 +64,9 @@ cbuffer FacetPerLight : register(b0, space1)
     float4 _ShadowMapTexture_TexelSize; // (1/size, 1/size, size, size) of the light's shadow map
 };
 sampler2D _LightTexture0 : register(s1, space1);          // light cookie: SPOT and DIRECTIONAL_COOKIE multiply by its alpha
-sampler2D _ShadowMapTexture : register(s2, space1);        // the light's shadow map (depth), FacetShadow.hlsl
+// binding 2: sampler2D _ShadowMapTexture, the light's shadow map: declared by
+// FacetShadow.hlsl (AutoLight.cginc), so that a program without AutoLight may
+// declare its own _ShadowMapTexture as in Unity.
 
 // ---- set 3: per draw (the object) ------------------------------------------
 cbuffer FacetPerDraw : register(b0, space3)
@@ -74,5 +76,64 @@ cbuffer FacetPerDraw : register(b0, space3)
     float4 unity_LODFade;
     float4 unity_WorldTransformParams;  // w = -1 when the object is mirrored, else 1
 };
+
+// ---- Unity built-ins facet does not compute ----------------------------------
+// Lightmaps, vertex lights, a second reflection probe, probe volumes, shadow
+// cascades: Unity names that shaders read but facet's renderer has no data
+// for. They live in blocks of their own, after the ones above, so the
+// layouts above stay as they are. The runtime fills blocks by member name
+// and leaves unknown members zero, and binds its white fallback texture
+// (the environment cube for cubes) to textures it does not know, which is
+// what a draw without these features expects: no lightmap scale/offset, no
+// vertex lights, unshadowed shadow mask, a second probe with zero HDR decode
+// (contributes nothing).
+cbuffer FacetPerFrameUnity : register(b2, space0)
+{
+    float4 unity_CameraWorldClipPlanes[6]; // left, right, bottom, top, near, far (world space)
+    float4 unity_ShadowColor;
+    float4 unity_SpecCube1_BoxMax;
+    float4 unity_SpecCube1_BoxMin;
+    float4 unity_SpecCube1_ProbePosition;
+    float4 unity_SpecCube1_HDR;
+};
+samplerCUBE unity_SpecCube1 : register(s3, space0);       // second (blend) reflection probe
+
+cbuffer FacetPerLightUnity : register(b3, space1)
+{
+    float4 _LightProjectionParams;      // point shadows: x = far/(near-far), y = near*far/(near-far), z = bias, w = scale bias
+    float4 unity_4LightPosX0;           // ForwardBase vertex lights: world x of 4 point lights
+    float4 unity_4LightPosY0;
+    float4 unity_4LightPosZ0;
+    float4 unity_4LightAtten0;          // their attenuation factors
+    float4 unity_LightColor[8];         // Vertex-lit pass lights: colour
+    float4 unity_LightPosition[8];      // view-space (position, 1) or (-direction, 0)
+    float4 unity_LightAtten[8];         // x = cos(spot/2), y = 1/cos(spot/4), z = quadratic attenuation, w = range squared
+    float4 unity_SpotDirection[8];      // view-space spot direction
+    float4 unity_OcclusionMaskSelector; // shadow-mask channel of the light
+    float4 unity_ShadowSplitSpheres[4]; // cascades
+    float4 unity_ShadowSplitSqRadii;
+    float4 _LightSplitsNear;
+    float4 _LightSplitsFar;
+    float4 unity_ShadowFadeCenterAndType;
+};
+
+cbuffer FacetPerDrawUnity : register(b1, space3)
+{
+    float4 unity_LightmapST;            // lightmap uv = uv1 * xy + zw
+    float4 unity_DynamicLightmapST;     // realtime lightmap uv = uv2 * xy + zw
+    float4 unity_ProbesOcclusion;
+    float4 unity_RenderingLayer;
+    float4 unity_ProbeVolumeParams;     // x = 1 when the object uses a light probe proxy volume
+    float4x4 unity_ProbeVolumeWorldToObject;
+    float3 unity_ProbeVolumeSizeInv;
+    float3 unity_ProbeVolumeMin;
+};
+sampler2D unity_Lightmap : register(s2, space3);
+sampler2D unity_LightmapInd : register(s3, space3);
+sampler2D unity_ShadowMask : register(s4, space3);
+sampler2D unity_DynamicLightmap : register(s5, space3);
+sampler2D unity_DynamicDirectionality : register(s6, space3);
+sampler2D unity_DynamicNormal : register(s7, space3);
+sampler3D unity_ProbeVolumeSH : register(s8, space3);
 
 #endif // FACET_BUILTINS_INCLUDED

@@ -95,17 +95,62 @@ float3 FacetDecodeHDR(float4 data, float4 instructions)
 // n.x^2 - n.y^2 (Sloan, "Stupid Spherical Harmonics Tricks", 2008).
 // FacetSHEval takes the seven coefficient vectors as arguments (for tests
 // and for SH data other than the environment's).
-float3 FacetSHEval(float4 n, float4 Ar, float4 Ag, float4 Ab, float4 Br, float4 Bg, float4 Bb, float4 C)
+float3 FacetSHEvalL0L1(float4 n, float4 shAr, float4 shAg, float4 shAb)
 {
-    float3 l01 = float3(dot(Ar, n), dot(Ag, n), dot(Ab, n));
+    return float3(dot(shAr, n), dot(shAg, n), dot(shAb, n));
+}
+float3 FacetSHEvalL2(float4 n, float4 shBr, float4 shBg, float4 shBb, float4 shC)
+{
     float4 b = n.xyzz * n.yzzx;
-    float3 l2 = float3(dot(Br, b), dot(Bg, b), dot(Bb, b));
-    l2 += C.rgb * (n.x * n.x - n.y * n.y);
-    return max(l01 + l2, 0.0);
+    return float3(dot(shBr, b), dot(shBg, b), dot(shBb, b)) + shC.rgb * (n.x * n.x - n.y * n.y);
+}
+float3 FacetSHEval(float4 n, float4 shAr, float4 shAg, float4 shAb, float4 shBr, float4 shBg, float4 shBb, float4 shC)
+{
+    return max(FacetSHEvalL0L1(n, shAr, shAg, shAb) + FacetSHEvalL2(n, shBr, shBg, shBb, shC), 0.0);
 }
 float3 FacetShadeSH9(float4 n)
 {
     return FacetSHEval(n, unity_SHAr, unity_SHAg, unity_SHAb, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC);
+}
+
+// ---- view-space normals in two channels ------------------------------------------
+// Stereographic projection from (0, 0, -1), scaled by 1/1.7777 to fit the
+// hemisphere facing the camera into 0..1 (the layout of Unity's
+// _CameraDepthNormalsTexture).
+float2 FacetEncodeViewNormal(float3 n)
+{
+    float2 p = n.xy / (n.z + 1.0);
+    return p * (0.5 / 1.7777) + 0.5;
+}
+float3 FacetDecodeViewNormal(float2 enc)
+{
+    float2 p = (enc * 2.0 - 1.0) * 1.7777;
+    float k = 2.0 / (dot(p, p) + 1.0);
+    return float3(p * k, k - 1.0);
+}
+
+// ---- vertex lights ---------------------------------------------------------------
+// Diffuse light of four point lights given as columns (positions split by
+// axis, squared-distance attenuation factors), at a world position/normal:
+// sum of colour * max(0, n.l) / (1 + d^2 * atten).
+float3 FacetShade4PointLights(float4 posX, float4 posY, float4 posZ, float3 col0, float3 col1, float3 col2,
+                              float3 col3, float4 attenSq, float3 pos, float3 normal)
+{
+    float4 dx = posX - pos.x;
+    float4 dy = posY - pos.y;
+    float4 dz = posZ - pos.z;
+    float4 distSq = max(dx * dx + dy * dy + dz * dz, 0.000001);
+    float4 ndotl = max(0.0, (dx * normal.x + dy * normal.y + dz * normal.z) * rsqrt(distSq));
+    float4 diff = ndotl / (1.0 + distSq * attenSq);
+    return col0 * diff.x + col1 * diff.y + col2 * diff.z + col3 * diff.w;
+}
+
+// Ordered-dither threshold of a pixel, in (0, 1): a 4x4 Bayer matrix.
+float FacetDitherThreshold(float2 pixel)
+{
+    static const float kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+    uint2 p = uint2(pixel) & 3u;
+    return (kBayer[p.y * 4u + p.x] + 0.5) / 16.0;
 }
 
 // ---- fog -------------------------------------------------------------------------

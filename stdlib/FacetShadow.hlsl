@@ -13,6 +13,13 @@
 
 #include "FacetBuiltins.hlsl"
 
+// The light's shadow map (depth; white without one), set 1 binding 2
+// (docs/binding-model.md). Unity declares it in AutoLight.cginc too.
+#ifndef SHADOWMAPSAMPLER_DEFINED
+#define SHADOWMAPSAMPLER_DEFINED
+#endif
+sampler2D _ShadowMapTexture : register(s2, space1);
+
 // 1 where the map's depth is not nearer to the light than `depth`, else 0.
 float FacetShadowCompare(float2 uv, float depth)
 {

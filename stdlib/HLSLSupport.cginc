@@ -61,7 +61,130 @@
 #define UNITY_SAMPLE_TEX3D(tex, coord) tex3D(tex, coord)
 #define UNITY_PASS_TEX2D(tex) tex
 #define UNITY_PASS_TEXCUBE(tex) tex
+#define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex
+#define UNITY_PASS_TEXCUBE_SAMPLER_LOD(tex, samplertex, lod) tex
 #define UNITY_ARGS_TEX2D(tex) sampler2D tex
 #define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
+
+// Precision-suffixed sampler and texture types are the plain ones (all
+// sampling is float).
+#define sampler2D_half sampler2D
+#define sampler2D_float sampler2D
+#define samplerCUBE_half samplerCUBE
+#define samplerCUBE_float samplerCUBE
+#define sampler3D_half sampler3D
+#define sampler3D_float sampler3D
+#define Texture2D_half Texture2D
+#define Texture2D_float Texture2D
+#define Texture2DArray_half Texture2DArray
+#define Texture2DArray_float Texture2DArray
+#define Texture2DMS_half Texture2DMS
+#define Texture2DMS_float Texture2DMS
+#define TextureCube_half TextureCube
+#define TextureCube_float TextureCube
+#define TextureCubeArray_half TextureCubeArray
+#define TextureCubeArray_float TextureCubeArray
+#define Texture3D_half Texture3D
+#define Texture3D_float Texture3D
+#define UNITY_DECLARE_TEX2D_HALF(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_INT(tex) Texture2D<int4> tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_UINT(tex) Texture2D<uint4> tex
+#define UNITY_DECLARE_TEX3D_NOSAMPLER(tex) sampler3D tex
+#define UNITY_DECLARE_TEX3D_FLOAT(tex) sampler3D tex
+#define UNITY_DECLARE_TEX3D_HALF(tex) sampler3D tex
+#define UNITY_SAMPLE_TEX3D_LOD(tex, coord, lod) tex3Dlod(tex, float4(coord, lod))
+#define UNITY_SAMPLE_TEX3D_SAMPLER(tex, samplertex, coord) tex3D(tex, coord)
+#define UNITY_SAMPLE_TEX3D_SAMPLER_LOD(tex, samplertex, coord, lod) tex3Dlod(tex, float4(coord, lod))
+#define SampleCubeReflection(env, dir, lod) UNITY_SAMPLE_TEXCUBE_LOD(env, dir, lod)
+#define samplerRECT sampler2D
+#define texRECT tex2D
+#define texRECTlod tex2Dlod
+#define texRECTbias tex2Dbias
+#define texRECTproj tex2Dproj
+
+// 2D and cube arrays have no combined DX9 form: a texture object plus a
+// sampler named sampler<tex> (two descriptors), as Unity's DX11 path.
+#define UNITY_DECLARE_TEX2DARRAY(tex) Texture2DArray tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
+#define UNITY_DECLARE_TEX2DARRAY_MS(tex) Texture2DMSArray<float> tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2DARRAY_MS_NOSAMPLER(tex) Texture2DArray<float> tex
+#define UNITY_ARGS_TEX2DARRAY(tex) Texture2DArray tex, SamplerState sampler##tex
+#define UNITY_PASS_TEX2DARRAY(tex) tex, sampler##tex
+#define UNITY_SAMPLE_TEX2DARRAY(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEX2DARRAY_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEX2DARRAY_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX2DARRAY_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+#define UNITY_DECLARE_TEXCUBEARRAY(tex) TextureCubeArray tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEXCUBEARRAY_NOSAMPLER(tex) TextureCubeArray tex
+#define UNITY_ARGS_TEXCUBEARRAY(tex) TextureCubeArray tex, SamplerState sampler##tex
+#define UNITY_PASS_TEXCUBEARRAY(tex) tex, sampler##tex
+#define UNITY_SAMPLE_TEXCUBEARRAY(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEXCUBEARRAY_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBEARRAY_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEXCUBEARRAY_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+
+// Depth textures (the camera's depth: declare _CameraDepthTexture with
+// these, the runtime binds it by name). Depth is in .r.
+#define UNITY_DECLARE_DEPTH_TEXTURE(tex) sampler2D tex
+#define UNITY_DECLARE_DEPTH_TEXTURE_MS(tex) Texture2DMS<float> tex
+#define SAMPLE_DEPTH_TEXTURE(tex, uv) (tex2D(tex, uv).r)
+#define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv).r)
+#define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
+#define SAMPLE_RAW_DEPTH_TEXTURE(tex, uv) (tex2D(tex, uv))
+#define SAMPLE_RAW_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv))
+#define SAMPLE_RAW_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv))
+#define SAMPLE_DEPTH_CUBE_TEXTURE(tex, uv) (texCUBE(tex, uv).r)
+#define UNITY_SAMPLE_DEPTH(value) (value).r
+// Screen-space textures are plain 2D textures (no single-pass stereo arrays).
+#define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
+#define UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex) sampler2D tex
+#define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)
+#define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) tex2Dproj(tex, UNITY_PROJ_COORD(uv)).r
+// Shadow maps: a depth texture compared by hand (1 lit, 0 shadowed).
+#define UNITY_DECLARE_SHADOWMAP(tex) sampler2D tex
+#define UNITY_DECLARE_TEXCUBE_SHADOWMAP(tex) samplerCUBE tex
+#define UNITY_SAMPLE_SHADOW(tex, coord) (tex2Dlod(tex, float4((coord).xy, 0, 0)).r >= (coord).z ? 1.0 : 0.0)
+#define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, (coord).xyz / (coord).w)
+#define UNITY_SAMPLE_TEXCUBE_SHADOW(tex, coord) (texCUBElod(tex, float4((coord).xyz, 0)).r >= (coord).w ? 1.0 : 0.0)
+// Old single-channel alpha textures.
+#define UNITY_SAMPLE_1CHANNEL(x, y) tex2D(x, y).a
+#define UNITY_ALPHA_CHANNEL a
+
+// Framebuffer fetch is not available: inputs are textures read at the
+// pixel position.
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_FLOAT(idx) Texture2D<float4> _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_HALF(idx) Texture2D<float4> _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_INT(idx) Texture2D<int4> _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_UINT(idx) Texture2D<uint4> _UnityFBInput##idx
+#define UNITY_READ_FRAMEBUFFER_INPUT(idx, v2fname) _UnityFBInput##idx.Load(uint3((v2fname).xy, 0))
+
+// Compiler, tessellation and keyword defaults.
+#define UNITY_COMPILER_HLSL 1
+#define UNITY_CAN_COMPILE_TESSELLATION 1
+#define UNITY_domain domain
+#define UNITY_partitioning partitioning
+#define UNITY_outputtopology outputtopology
+#define UNITY_patchconstantfunc patchconstantfunc
+#define UNITY_outputcontrolpoints outputcontrolpoints
+#define UNITY_FASTOPT
+#define UNITY_ALLOWED_MRT_COUNT 8
+#if !defined(DIRLIGHTMAP_OFF) && !defined(DIRLIGHTMAP_COMBINED)
+#define DIRLIGHTMAP_OFF 1
+#endif
+#if !defined(LIGHTMAP_OFF) && !defined(LIGHTMAP_ON)
+#define LIGHTMAP_OFF 1
+#endif
+#if !defined(DYNAMICLIGHTMAP_OFF) && !defined(DYNAMICLIGHTMAP_ON)
+#define DYNAMICLIGHTMAP_OFF 1
+#endif
+// Cg's WPOS is VPOS (the pixel position).
+#define WPOS VPOS
+#define GLOBAL_CBUFFER_START(name) cbuffer name {
+#define GLOBAL_CBUFFER_END };
+#define CBUFFER_START_WITH_BINDING(name) cbuffer name {
 
 #endif // HLSL_SUPPORT_INCLUDED

@@ -15,6 +15,7 @@
 #define UNITY_INV_FOUR_PI 0.07957747155f
 #define UNITY_HALF_PI 1.57079632679f
 #define UNITY_INV_HALF_PI 0.636619772367f
+#define UNITY_HALF_MIN 6.103515625e-5
 
 // Colour-space constants. Linear: the gamma values converted with the sRGB
 // curve; the dielectric F0 is 0.04 (4% reflectance) in both spaces.
@@ -29,6 +30,15 @@
 #define unity_ColorSpaceDielectricSpec half4(0.04, 0.04, 0.04, 1.0 - 0.04)
 #define unity_ColorSpaceLuminance half4(0.2126729, 0.7151522, 0.0721750, 1.0)
 #endif
+
+inline bool IsGammaSpace()
+{
+#ifdef UNITY_COLORSPACE_GAMMA
+    return true;
+#else
+    return false;
+#endif
+}
 
 // ---- vertex inputs ------------------------------------------------------------
 struct appdata_base {
@@ -63,7 +73,17 @@ struct appdata_img {
 struct v2f_img {
     float4 pos : SV_POSITION;
     half2 uv : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+    UNITY_VERTEX_OUTPUT_STEREO
 };
+struct v2f_vertex_lit {
+    float2 uv : TEXCOORD0;
+    fixed4 diff : COLOR0;
+    fixed4 spec : COLOR1;
+};
+// Legacy names: the vertex input's normal and uv (no texture matrices).
+#define SCALED_NORMAL v.normal
+#define TRANSFORM_UV(idx) v.texcoord.xy
 
 // ---- transforms ------------------------------------------------------------------
 inline float4 UnityWorldToClipPos(in float3 pos) { return FacetWorldToClipPos(pos); }
@@ -92,6 +112,47 @@ inline float3 ObjSpaceLightDir(in float4 v)
 }
 
 #define TRANSFORM_TEX(tex, name) (tex.xy * name##_ST.xy + name##_ST.zw)
+float2 MultiplyUV(float4x4 mat, float2 inUV) { return mul(mat, float4(inUV, 0, 0)).xy; }
+inline float2 TransformViewToProjection(float2 v) { return mul((float2x2)UNITY_MATRIX_P, v); }
+inline float3 TransformViewToProjection(float3 v) { return mul((float3x3)UNITY_MATRIX_P, v); }
+
+// ---- vertex lights --------------------------------------------------------------------------
+// ForwardBase's four per-vertex point lights (unity_4LightPos*, zero in
+// facet: no contribution) and the Vertex pass's eight lights
+// (unity_LightPosition etc., view space). See FacetBuiltins.hlsl.
+float3 Shade4PointLights(float4 lightPosX, float4 lightPosY, float4 lightPosZ, float3 lightColor0,
+                         float3 lightColor1, float3 lightColor2, float3 lightColor3, float4 lightAttenSq,
+                         float3 pos, float3 normal)
+{
+    return FacetShade4PointLights(lightPosX, lightPosY, lightPosZ, lightColor0, lightColor1, lightColor2,
+                                  lightColor3, lightAttenSq, pos, normal);
+}
+// Ambient plus `lightCount` lights at an object-space vertex; spot cones
+// when spotLight is true.
+float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight)
+{
+    float3 viewPos = UnityObjectToViewPos(vertex.xyz);
+    float3 viewNormal = normalize(mul((float3x3)UNITY_MATRIX_IT_MV, normal));
+    float3 sum = UNITY_LIGHTMODEL_AMBIENT.xyz;
+    for (int li = 0; li < lightCount; li++) {
+        float3 toLight = unity_LightPosition[li].xyz - viewPos * unity_LightPosition[li].w;
+        float distSq = max(dot(toLight, toLight), 0.000001);
+        toLight *= rsqrt(distSq);
+        float atten = 1.0 / (1.0 + distSq * unity_LightAtten[li].z);
+        if (spotLight) {
+            float rho = max(0.0, dot(toLight, unity_SpotDirection[li].xyz));
+            atten *= saturate((rho - unity_LightAtten[li].x) * unity_LightAtten[li].y);
+        }
+        sum += unity_LightColor[li].rgb * (max(0.0, dot(viewNormal, toLight)) * atten);
+    }
+    return sum;
+}
+float3 ShadeVertexLights(float4 vertex, float3 normal) { return ShadeVertexLightsFull(vertex, normal, 4, false); }
+inline fixed4 VertexLight(v2f_vertex_lit i, sampler2D mainTex)
+{
+    fixed4 texcol = tex2D(mainTex, i.uv);
+    return fixed4(texcol.xyz * i.diff.xyz + i.spec.xyz * texcol.a, texcol.w * i.diff.w);
+}
 
 // ---- screen space -------------------------------------------------------------------
 // xy / w is the 0..1 screen position (0 at the top-left in Vulkan).
@@ -103,16 +164,38 @@ inline float4 ComputeScreenPos(float4 pos)
     return o;
 }
 inline float4 ComputeGrabScreenPos(float4 pos) { return ComputeScreenPos(pos); }
+inline float4 ComputeNonStereoScreenPos(float4 pos) { return ComputeScreenPos(pos); }
+#define V2F_SCREEN_TYPE float4
+// Rounds a clip position to the nearest pixel centre grid (pixel-perfect sprites).
+inline float4 UnityPixelSnap(float4 pos)
+{
+    float2 halfSize = _ScreenParams.xy * 0.5;
+    pos.xy = round(pos.xy / pos.w * halfSize) / halfSize * pos.w;
+    return pos;
+}
+// Single-pass stereo is off: screen-space uvs are used as they are, or
+// scaled/offset explicitly by UnityStereoScreenSpaceUVAdjust.
+inline float2 UnityStereoScreenSpaceUVAdjustInternal(float2 uv, float4 scaleAndOffset) { return uv * scaleAndOffset.xy + scaleAndOffset.zw; }
+inline float4 UnityStereoScreenSpaceUVAdjustInternal(float4 uv, float4 scaleAndOffset)
+{
+    return float4(uv.xy * scaleAndOffset.xy + scaleAndOffset.zw, uv.zw * scaleAndOffset.xy + scaleAndOffset.zw);
+}
+#define UnityStereoScreenSpaceUVAdjust(x, y) UnityStereoScreenSpaceUVAdjustInternal(x, y)
+#define TransformStereoScreenSpaceTex(uv, w) (uv)
+#define UnityStereoTransformScreenSpaceTex(uv) (uv)
+#define UnityStereoClamp(uv, scaleAndOffset) (uv)
 
 // ---- depth ----------------------------------------------------------------------------
 inline float Linear01Depth(float z) { return FacetLinear01Depth(z); }
 inline float LinearEyeDepth(float z) { return FacetLinearEyeDepth(z); }
-#define UNITY_SAMPLE_DEPTH(value) (value).r
-#define SAMPLE_DEPTH_TEXTURE(tex, uv) (tex2D(tex, uv).r)
-#define SAMPLE_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv).r)
-#define SAMPLE_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv).r)
+// UNITY_SAMPLE_DEPTH, SAMPLE_DEPTH_TEXTURE(_PROJ/_LOD): HLSLSupport.cginc.
 #define COMPUTE_EYEDEPTH(o) o = -UnityObjectToViewPos(v.vertex).z
 #define COMPUTE_DEPTH_01 -(UnityObjectToViewPos(v.vertex).z * _ProjectionParams.w)
+#define COMPUTE_VIEW_NORMAL normalize(mul((float3x3)UNITY_MATRIX_IT_MV, v.normal))
+#define DECODE_EYEDEPTH(i) LinearEyeDepth(i)
+// Depth textures are native: nothing to pass or write.
+#define UNITY_TRANSFER_DEPTH(oo)
+#define UNITY_OUTPUT_DEPTH(i) return 0
 
 // ---- colour ------------------------------------------------------------------------------
 inline half3 GammaToLinearSpace(half3 sRGB) { return FacetSrgbToLinear(sRGB); }
@@ -124,13 +207,112 @@ inline half LinearRgbToLuminance(half3 linearRgb) { return FacetLuminance(linear
 
 // ---- textures --------------------------------------------------------------------------------
 inline fixed3 UnpackNormal(fixed4 packednormal) { return FacetUnpackNormal(packednormal); }
+// x from alpha, y from green (DXT5nm), or x from red (BC5, alpha 1).
+fixed3 UnpackNormalmapRGorAG(fixed4 packednormal)
+{
+    packednormal.x *= packednormal.w;
+    fixed3 n;
+    n.xy = packednormal.xy * 2.0 - 1.0;
+    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
+    return n;
+}
+inline fixed3 UnpackNormalDXT5nm(fixed4 packednormal)
+{
+    fixed3 n;
+    n.xy = packednormal.wy * 2.0 - 1.0;
+    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
+    return n;
+}
+// Unity's form rebuilds z from the scaled xy in both encodings.
+fixed3 UnpackNormalWithScale(fixed4 packednormal, float scale)
+{
+#ifndef UNITY_NO_DXT5nm
+    packednormal.x *= packednormal.w;
+#endif
+    fixed3 n;
+    n.xy = (packednormal.xy * 2.0 - 1.0) * scale;
+    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
+    return n;
+}
 inline half3 DecodeHDR(half4 data, half4 decodeInstructions) { return FacetDecodeHDR(data, decodeInstructions); }
+// RGBM with a maximum range: rgb / alpha with alpha quantised up to 8 bits.
+half4 UnityEncodeRGBM(half3 color, float maxRGBM)
+{
+    float3 rgb = color / maxRGBM;
+    float alpha = max(max(rgb.r, rgb.g), max(rgb.b, 0.02));
+    alpha = max(ceil(alpha * 255.0) / 255.0, 0.02);
+    return half4(rgb / alpha, alpha);
+}
+
+// ---- lightmaps ------------------------------------------------------------------------------
+// facet's lightmaps (when a runtime provides them) are plain HDR textures:
+// the decode instructions are (1, 1, 0, 0), and DecodeLightmap(c) is c.rgb
+// (Unity's UNITY_LIGHTMAP_FULL_HDR). The RGBM and double-LDR forms stay
+// available for shaders that call them. unity_Lightmap, unity_LightmapInd,
+// unity_LightmapST etc. are in FacetBuiltins.hlsl.
+#define unity_Lightmap_HDR half4(1.0, 1.0, 0.0, 0.0)
+#define unity_DynamicLightmap_HDR half4(1.0, 1.0, 0.0, 0.0)
+#define LIGHTMAP_RGBM_SCALE 5.0
+#define EMISSIVE_RGBM_SCALE 97.0
+inline half3 DecodeLightmapRGBM(half4 data, half4 decodeInstructions)
+{
+#if defined(UNITY_COLORSPACE_GAMMA)
+    return (decodeInstructions.x * data.a) * data.rgb;
+#else
+    return (decodeInstructions.x * pow(max(data.a, 0.0), decodeInstructions.y)) * data.rgb;
+#endif
+}
+inline half3 DecodeLightmapDoubleLDR(fixed4 color, half4 decodeInstructions) { return decodeInstructions.x * color.rgb; }
+inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions)
+{
+#if defined(UNITY_LIGHTMAP_DLDR_ENCODING)
+    return DecodeLightmapDoubleLDR(color, decodeInstructions);
+#elif defined(UNITY_LIGHTMAP_RGBM_ENCODING)
+    return DecodeLightmapRGBM(color, decodeInstructions);
+#else
+    return color.rgb;
+#endif
+}
+inline half3 DecodeLightmap(fixed4 color) { return DecodeLightmap(color, unity_Lightmap_HDR); }
+// Realtime (Enlighten) lightmaps: RGBM in linear space with its own exponent.
+inline half3 DecodeRealtimeLightmap(fixed4 color)
+{
+    return pow(max((unity_DynamicLightmap_HDR.x * color.a) * color.rgb, 0.0), unity_DynamicLightmap_HDR.y);
+}
+// Directional lightmaps: half-Lambert against the baked dominant direction
+// (rgb, biased by 0.5), divided by its length stored in alpha.
+inline half3 DecodeDirectionalLightmap(half3 color, fixed4 dirTex, half3 normalWorld)
+{
+    half halfLambert = dot(normalWorld, dirTex.xyz - 0.5) + 0.5;
+    return color * halfLambert / max(1e-4, dirTex.w);
+}
 
 // ---- ambient ---------------------------------------------------------------------------------
+// The L0+L1 and L2 parts of the environment SH, linear, unclamped.
+half3 SHEvalLinearL0L1(half4 normal) { return FacetSHEvalL0L1(normal, unity_SHAr, unity_SHAg, unity_SHAb); }
+half3 SHEvalLinearL2(half4 normal) { return FacetSHEvalL2(normal, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC); }
 // Environment irradiance for a world normal (normal.w = 1), in the project's colour space.
 half3 ShadeSH9(half4 normal)
 {
     half3 res = FacetShadeSH9(normal);
+#ifdef UNITY_COLORSPACE_GAMMA
+    res = LinearToGammaSpace(res);
+#endif
+    return res;
+}
+
+// Old partial forms: only L2 (ShadeSH3Order) or only L0+L1 (ShadeSH12Order).
+half3 ShadeSH3Order(half4 normal)
+{
+    half3 res = SHEvalLinearL2(normal);
+#ifdef UNITY_COLORSPACE_GAMMA
+    res = LinearToGammaSpace(res);
+#endif
+    return res;
+}
+half3 ShadeSH12Order(half4 normal)
+{
+    half3 res = SHEvalLinearL0L1(normal);
 #ifdef UNITY_COLORSPACE_GAMMA
     res = LinearToGammaSpace(res);
 #endif
@@ -157,6 +339,74 @@ half3 ShadeSH9(half4 normal)
 #endif
 
 #define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
+// Unity's lower-level fog names. The coordinate facet passes is the fog
+// distance (FacetFogDistance), which for its 0..1 clip depth Unity's
+// UNITY_Z_0_FAR_FROM_CLIPSPACE approximates by clip z as well.
+#define UNITY_Z_0_FAR_FROM_CLIPSPACE(coord) (coord)
+#define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = FacetFogFactor(coord)
+#define UNITY_CALC_FOG_FACTOR(coord) UNITY_CALC_FOG_FACTOR_RAW(UNITY_Z_0_FAR_FROM_CLIPSPACE(coord))
+#define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
+// The fog distance carried in a spare component of another interpolator
+// (as Unity's generated surface passes do), then pulled out as _unity_fogCoord.
+#if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_TSPACE(o, outpos) o.tSpace2.y = FacetFogDistance(outpos)
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_WORLD_POS(o, outpos) o.worldPos.w = FacetFogDistance(outpos)
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_EYE_VEC(o, outpos) o.eyeVec.w = FacetFogDistance(outpos)
+#define UNITY_EXTRACT_FOG(name) float _unity_fogCoord = name.fogCoord
+#define UNITY_EXTRACT_FOG_FROM_TSPACE(name) float _unity_fogCoord = name.tSpace2.y
+#define UNITY_EXTRACT_FOG_FROM_WORLD_POS(name) float _unity_fogCoord = name.worldPos.w
+#define UNITY_EXTRACT_FOG_FROM_EYE_VEC(name) float _unity_fogCoord = name.eyeVec.w
+#else
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_TSPACE(o, outpos)
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_WORLD_POS(o, outpos)
+#define UNITY_TRANSFER_FOG_COMBINED_WITH_EYE_VEC(o, outpos)
+#define UNITY_EXTRACT_FOG(name)
+#define UNITY_EXTRACT_FOG_FROM_TSPACE(name)
+#define UNITY_EXTRACT_FOG_FROM_WORLD_POS(name)
+#define UNITY_EXTRACT_FOG_FROM_EYE_VEC(name)
+#endif
+
+// ---- tangent frames packed in three interpolators (tSpace0..2) ------------------------------
+// Rows of the tangent-to-world matrix as _unity_tbn_0..2; UNITY_RECONSTRUCT_TBN
+// rebuilds them from tangent and normal (the binormal sign in tSpace1.y)
+// when the generated pass packs other data in the spare components.
+#define UNITY_EXTRACT_TBN_0(name) fixed3 _unity_tbn_0 = name.tSpace0.xyz
+#define UNITY_EXTRACT_TBN_1(name) fixed3 _unity_tbn_1 = name.tSpace1.xyz
+#define UNITY_EXTRACT_TBN_2(name) fixed3 _unity_tbn_2 = name.tSpace2.xyz
+#define UNITY_EXTRACT_TBN(name) UNITY_EXTRACT_TBN_0(name); UNITY_EXTRACT_TBN_1(name); UNITY_EXTRACT_TBN_2(name)
+#define UNITY_EXTRACT_TBN_T(name) fixed3 _unity_tangent = fixed3(name.tSpace0.x, name.tSpace1.x, name.tSpace2.x)
+#define UNITY_EXTRACT_TBN_N(name) fixed3 _unity_normal = fixed3(name.tSpace0.z, name.tSpace1.z, name.tSpace2.z)
+#define UNITY_EXTRACT_TBN_B(name) fixed3 _unity_binormal = cross(_unity_normal, _unity_tangent)
+#define UNITY_CORRECT_TBN_B_SIGN(name) _unity_binormal *= name.tSpace1.y;
+#define UNITY_RECONSTRUCT_TBN_0 fixed3 _unity_tbn_0 = fixed3(_unity_tangent.x, _unity_binormal.x, _unity_normal.x)
+#define UNITY_RECONSTRUCT_TBN_1 fixed3 _unity_tbn_1 = fixed3(_unity_tangent.y, _unity_binormal.y, _unity_normal.y)
+#define UNITY_RECONSTRUCT_TBN_2 fixed3 _unity_tbn_2 = fixed3(_unity_tangent.z, _unity_binormal.z, _unity_normal.z)
+#if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
+#define UNITY_RECONSTRUCT_TBN(name) UNITY_EXTRACT_TBN_T(name); UNITY_EXTRACT_TBN_N(name); UNITY_EXTRACT_TBN_B(name); \
+    UNITY_CORRECT_TBN_B_SIGN(name); UNITY_RECONSTRUCT_TBN_0; UNITY_RECONSTRUCT_TBN_1; UNITY_RECONSTRUCT_TBN_2
+#else
+#define UNITY_RECONSTRUCT_TBN(name) UNITY_EXTRACT_TBN(name)
+#endif
+
+// ---- LOD cross-fade -------------------------------------------------------------------------
+// LOD_FADE_CROSSFADE: discard by a 4x4 screen-space dither against
+// unity_LODFade.x (negative: fading in). facet computes the Bayer pattern
+// instead of sampling Unity's unity_DitherMask texture.
+#define UNITY_DITHER_CROSSFADE_COORDS
+#define UNITY_DITHER_CROSSFADE_COORDS_IDX(idx)
+#define UNITY_TRANSFER_DITHER_CROSSFADE(o, v)
+#define UNITY_TRANSFER_DITHER_CROSSFADE_HPOS(o, hpos)
+void UnityApplyDitherCrossFade(float2 vpos)
+{
+    float mask = FacetDitherThreshold(vpos);
+    float sgn = unity_LODFade.x > 0 ? 1.0 : -1.0;
+    clip(unity_LODFade.x - mask * sgn);
+}
+#ifdef LOD_FADE_CROSSFADE
+#define UNITY_APPLY_DITHER_CROSSFADE(vpos) UnityApplyDitherCrossFade(vpos)
+#else
+#define UNITY_APPLY_DITHER_CROSSFADE(vpos)
+#endif
 
 // ---- ambient / probes -----------------------------------------------------------------------
 // SH is sampled in every pass that adds indirect light, i.e. all but
@@ -200,6 +450,19 @@ inline float2 EncodeFloatRG(float v)
     return enc;
 }
 inline float DecodeFloatRG(float2 enc) { return dot(enc, float2(1.0, 1 / 255.0)); }
+// View-space normals in two 0..1 channels (FacetEncodeViewNormal), and the
+// depth-normals layout: normal in xy, 0..1 depth in zw.
+inline float2 EncodeViewNormalStereo(float3 n) { return FacetEncodeViewNormal(n); }
+inline float3 DecodeViewNormalStereo(float4 enc4) { return FacetDecodeViewNormal(enc4.xy); }
+inline float4 EncodeDepthNormal(float depth, float3 normal) { return float4(EncodeViewNormalStereo(normal), EncodeFloatRG(depth)); }
+inline void DecodeDepthNormal(float4 enc, out float depth, out float3 normal)
+{
+    depth = DecodeFloatRG(enc.zw);
+    normal = DecodeViewNormalStereo(enc);
+}
+// Heightmaps: facet's targets have 16-bit red, so the height is stored as is.
+float4 PackHeightmap(float height) { return float4(height, height, height, height); }
+float UnpackHeightmap(float4 height) { return height.r; }
 
 // ---- shadow casters ---------------------------------------------------------------------------
 // Point-light shadows (SHADOWS_CUBE) store the distance to the light over

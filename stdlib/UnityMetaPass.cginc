@@ -12,8 +12,7 @@
 
 float4 unity_MetaVertexControl;
 float4 unity_MetaFragmentControl;
-float4 unity_LightmapST;
-float4 unity_DynamicLightmapST;
+// unity_LightmapST and unity_DynamicLightmapST: FacetBuiltins.hlsl (set 3).
 
 struct UnityMetaInput
 {

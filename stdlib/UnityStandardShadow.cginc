@@ -49,13 +49,7 @@ VertexOutputShadowCaster vertShadowCaster(VertexInput v)
     return o;
 }
 
-// Ordered-dither threshold of a pixel, in (0, 1): a 4x4 Bayer matrix.
-float FacetDitherThreshold(float2 pixel)
-{
-    static const float kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
-    uint2 p = uint2(pixel) & 3u;
-    return (kBayer[p.y * 4u + p.x] + 0.5) / 16.0;
-}
+// FacetDitherThreshold (the 4x4 Bayer threshold): FacetCore.hlsl.
 
 half4 fragShadowCaster(VertexOutputShadowCaster i) : SV_Target
 {

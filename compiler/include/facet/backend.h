@@ -44,6 +44,9 @@ struct IncludedFile {
 using IncludeResolver =
     std::function<std::optional<IncludedFile>(const std::string& requested, const std::string& includer)>;
 
+// The Unity version facet's stdlib follows: Unity 2019.4.
+inline constexpr int kDefaultUnityVersion = 201940;
+
 struct BackendOptions {
   OptLevel opt = OptLevel::performance;
   TargetEnv target = TargetEnv::vulkan1_1;
@@ -51,6 +54,8 @@ struct BackendOptions {
   std::vector<std::string> include_dirs;  // -I, searched after the includer's folder
   std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
   std::string stdlib_dir;                 // searched last
+  // UNITY_VERSION as Unity defines it: 2019.4 -> 201940 (facetc --unity-version).
+  int unity_version = kDefaultUnityVersion;
   // When set, used instead of the file system (in-memory compiles).
   IncludeResolver resolver;
 };

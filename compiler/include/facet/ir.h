@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "facet/source.h"
@@ -15,8 +16,17 @@
 namespace facet::ir {
 
 enum class PropertyType : uint8_t {
-  float_, int_, integer, range, color, vector, tex2d, tex3d, cube, tex2d_array, cube_array
+  float_, int_, integer, range, color, vector, tex2d, tex3d, cube, tex2d_array, cube_array,
+  tex_any  // Unity's "any": a texture of whatever dimension the program declares
 };
+
+// The canonical spelling of a property type ("Float", "2D", "Any", ...), as
+// the IR dump and the package's JSON view print it.
+constexpr std::string_view property_type_name(PropertyType t) {
+  constexpr std::string_view kNames[] = {"Float", "Int", "Integer", "Range", "Color", "Vector",
+                                         "2D",    "3D",  "Cube",    "2DArray", "CubeArray", "Any"};
+  return size_t(t) < std::size(kNames) ? kNames[size_t(t)] : "unknown";
+}
 
 // "[Toggle(_FOO)]" -> {name "Toggle", args {"_FOO"}}. Names keep their
 // spelling; unknown attributes are kept too.

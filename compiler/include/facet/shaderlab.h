@@ -113,12 +113,44 @@ struct Command {
   SourceSpan span;
 };
 
-// A command that is parsed but has no effect: legacy fixed-function state
-// (Lighting, Fog {}, SetTexture, ...) and metadata facet does not use
-// (Dependency, PackageRequirements, ...).
+// One token inside the braces of a legacy block (Material, SetTexture, Fog,
+// BindChannels), kept as the lexer saw it: sema reads "combine texture *
+// primary DOUBLE, texture" itself, because those blocks have a grammar of
+// their own.
+struct LegacyToken {
+  enum class Kind : uint8_t { word, number, string, property, symbol };
+  Kind kind = Kind::word;
+  std::string text;   // as written; property: the name inside '[...]'; string: decoded
+  double number = 0;  // number tokens
+  bool line_start = false;
+  SourceSpan span;
+};
+
+// A legacy fixed-function command with its arguments. sema lowers these into
+// a generated program for a Pass that has no program block.
+//   Lighting/SeparateSpecular/ColorMaterial: values {word};
+//   AlphaTest: {Off} | {comparison, reference};  Color: {[_Prop]} or `color`;
+//   SetTexture: values {[_Tex]} and `body`;  Material/Fog/BindChannels: `body`.
+struct LegacyCommand {
+  std::string name;  // the keyword as written
+  std::vector<Value> values;
+  std::vector<double> color;      // "Color (r, g, b, a)"
+  SourceSpan color_span;
+  std::vector<LegacyToken> body;  // between the braces, in order
+  bool has_body = false;
+  SourceSpan body_span;           // from '{' to '}'
+  SourceSpan keyword_span;
+  SourceSpan span;
+};
+
+// A command that is parsed but not turned into render state: legacy
+// fixed-function commands (Lighting, Fog {}, SetTexture, ...; `legacy` holds
+// their arguments) and metadata facet does not use (Dependency,
+// PackageRequirements, ...; `legacy` is empty).
 struct IgnoredCommand {
   std::string name;  // as written
   SourceSpan span;
+  std::optional<LegacyCommand> legacy;
 };
 
 enum class ProgramLanguage : uint8_t { cg, hlsl, glsl };
@@ -170,6 +202,8 @@ struct SubShader {
 struct Category {
   int parent = -1;  // enclosing Category, -1: none
   std::vector<Tag> tags;
+  std::optional<int> lod;  // inherited by SubShaders without their own LOD
+  SourceSpan lod_span;
   std::vector<Command> state;
   std::vector<ProgramBlock> includes;
   std::vector<IgnoredCommand> ignored;

@@ -30,6 +30,14 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
   out += fmt::format("#define {} 1\n", stage_define(stage));
   out += fmt::format("#define SHADER_TARGET {}\n", program.shader_target);
   out += "#define SHADER_API_VULKAN 1\n";
+  out += "#define SHADER_API_DESKTOP 1\n";
+  out += fmt::format("#define UNITY_VERSION {}\n", options.unity_version);
+  if (program.language != ir::ProgramLanguage::glsl) {
+    // Unity compiles Vulkan shaders with an HLSL compiler and HLSLcc; Unity's
+    // own HLSLSupport.cginc (given with -I) picks its Vulkan code by these.
+    out += "#define UNITY_COMPILER_HLSL 1\n";
+    out += "#define UNITY_COMPILER_HLSLCC 1\n";
+  }
   for (const std::string& keyword : keywords) {
     if (!keyword.empty()) out += fmt::format("#define {} 1\n", keyword);
   }
@@ -118,9 +126,12 @@ AssembledSource assemble_source(const ir::Program& program, Stage stage, const s
   out += fmt::format("#line 2 \"{}\"\n", kPreludeName);
   append_defines(out, program, stage, keywords, options);
   if (program.language == ir::ProgramLanguage::cg) {
-    // Unity includes these implicitly in CGPROGRAM (not in HLSLPROGRAM).
+    // Unity includes these implicitly in CGPROGRAM (not in HLSLPROGRAM);
+    // with Unity's CGIncludes on the -I path, Unity's files are the ones found.
+    out += "#include <FacetHLSLccTypes.hlsl>\n";
     out += "#include <HLSLSupport.cginc>\n";
     out += "#include <UnityShaderVariables.cginc>\n";
+    out += "#include <UnityShaderUtilities.cginc>\n";
   }
   result.prelude = out;
   for (const ir::SourceChunk& chunk : program.includes) append_chunk(out, chunk, result.root_name);

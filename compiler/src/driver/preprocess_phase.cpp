@@ -80,6 +80,7 @@ std::string search_context(const ir::Shader& shader, const backend::BackendOptio
   for (const std::string& dir : options.include_dirs) context += "|I" + fs::absolute(dir, ec).string();
   context += "|stdlib " + (options.stdlib_dir.empty() ? backend::default_stdlib_dir() : options.stdlib_dir);
   for (const auto& [name, value] : options.defines) context += "|D" + name + "=" + value;
+  context += "|U" + std::to_string(options.unity_version);
   return context;
 }
 

@@ -57,6 +57,14 @@ const ir::Pass* resolve_use_pass(const ir::Shader& shader, const ir::Pass& use, 
 Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shader, const CompileOptions& options,
                                                           Diagnostics& diags) const {
   if (shader.subshaders.empty()) {
+    // Unity accepts a shader that only names a Fallback: every draw uses the
+    // fallback shader. It has nothing of its own to compile.
+    if (shader.fallback) {
+      diags.add(DiagId::driver_fallback_only, shader.span,
+                fmt::format("shader '{}' has no SubShader; Unity draws it with its Fallback '{}'", shader.name,
+                            *shader.fallback));
+      return std::vector<SelectedPass>{};
+    }
     diags.add(DiagId::driver_no_program, shader.span, fmt::format("shader '{}' has no SubShader", shader.name));
     return failure("no subshader");
   }

@@ -68,7 +68,7 @@ inline uint64_t string_budget(uint64_t file_size) {
 }
 
 // Largest valid value of each enum stored as a byte.
-inline constexpr uint8_t kMaxPropertyType = uint8_t(ir::PropertyType::cube_array);
+inline constexpr uint8_t kMaxPropertyType = uint8_t(ir::PropertyType::tex_any);
 inline constexpr uint8_t kMaxKeywordDirective = 2;  // dynamic_branch
 
 // ---- Shared pieces --------------------------------------------------------

@@ -29,23 +29,6 @@ Json number(float f) {
   return d;
 }
 
-std::string_view property_type_name(ir::PropertyType t) {
-  switch (t) {
-    case ir::PropertyType::float_: return "Float";
-    case ir::PropertyType::int_: return "Int";
-    case ir::PropertyType::integer: return "Integer";
-    case ir::PropertyType::range: return "Range";
-    case ir::PropertyType::color: return "Color";
-    case ir::PropertyType::vector: return "Vector";
-    case ir::PropertyType::tex2d: return "2D";
-    case ir::PropertyType::tex3d: return "3D";
-    case ir::PropertyType::cube: return "Cube";
-    case ir::PropertyType::tex2d_array: return "2DArray";
-    case ir::PropertyType::cube_array: return "CubeArray";
-  }
-  return "unknown";
-}
-
 std::string_view directive_text(variants::KeywordDirective d) {
   switch (d) {
     case variants::KeywordDirective::multi_compile: return "multi_compile";

@@ -32,17 +32,11 @@ Json value(const ir::StateValue& v) { return v.is_property() ? "[" + v.property 
 
 Json optional_value(const std::optional<ir::StateValue>& v) { return v ? value(*v) : Json(); }
 
-const char* type_name(ir::PropertyType t) {
-  static const char* const kNames[] = {"Float", "Int", "Integer", "Range", "Color", "Vector",
-                                       "2D", "3D", "Cube", "2DArray", "CubeArray"};
-  return kNames[size_t(t)];
-}
-
 Json property(const ir::Property& p) {
   Json j;
   j["name"] = p.name;
   j["display"] = p.display_name;
-  j["type"] = type_name(p.type);
+  j["type"] = std::string(ir::property_type_name(p.type));
   Json attributes = Json::array();
   for (const ir::PropertyAttribute& a : p.attributes) attributes.push_back({{"name", a.name}, {"args", a.args}});
   j["attributes"] = attributes;

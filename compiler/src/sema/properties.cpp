@@ -13,7 +13,7 @@ struct TypeName {
   ir::PropertyType type;
 };
 
-constexpr std::array<TypeName, 11> kTypes = {{
+constexpr std::array<TypeName, 12> kTypes = {{
     {"Float", ir::PropertyType::float_},
     {"Int", ir::PropertyType::int_},
     {"Integer", ir::PropertyType::integer},
@@ -25,16 +25,25 @@ constexpr std::array<TypeName, 11> kTypes = {{
     {"Cube", ir::PropertyType::cube},
     {"2DArray", ir::PropertyType::tex2d_array},
     {"CubeArray", ir::PropertyType::cube_array},
+    {"Any", ir::PropertyType::tex_any},
 }};
 
-constexpr std::array<std::string_view, 11> kTypeNames = {
-    "Float", "Int", "Integer", "Range", "Color", "Vector", "2D", "3D", "Cube", "2DArray", "CubeArray"};
+// Unity's legacy spellings, accepted as they are in Unity 2017-2019.
+constexpr std::array<TypeName, 1> kLegacyTypes = {{
+    {"RECT", ir::PropertyType::tex2d},  // the old rectangle texture: a 2D texture
+}};
+
+constexpr std::array<std::string_view, 12> kTypeNames = {
+    "Float", "Int", "Integer", "Range", "Color", "Vector", "2D", "3D", "Cube", "2DArray", "CubeArray", "Any"};
 
 constexpr std::array<std::string_view, 8> kTextureDefaults = {
     "white", "black", "gray", "grey", "bump", "red", "linearGray", ""};
 
 std::optional<ir::PropertyType> lookup_type(const ast::Property& p, Context& ctx) {
   for (const TypeName& t : kTypes) {
+    if (iequals(t.name, p.type)) return t.type;
+  }
+  for (const TypeName& t : kLegacyTypes) {
     if (iequals(t.name, p.type)) return t.type;
   }
   Diagnostic& d = ctx.error(DiagId::sema_unknown_property_type, p.type_span,
@@ -70,7 +79,7 @@ bool check_type_args(const ast::Property& p, ir::PropertyType type, ir::Property
   return true;
 }
 
-std::string type_word(ir::PropertyType t) { return std::string(kTypes[size_t(t)].name); }
+std::string type_word(ir::PropertyType t) { return std::string(ir::property_type_name(t)); }
 
 bool check_default(const ast::Property& p, ir::PropertyType type, ir::Property& out, Context& ctx) {
   const ast::PropertyDefault& d = p.default_value;

@@ -15,8 +15,13 @@ using Values = std::span<const std::string_view>;
 
 constexpr std::string_view kCull[] = {"Back", "Front", "Off"};
 constexpr std::string_view kCompare[] = {"Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always", "Never"};
-constexpr std::string_view kOnOff[] = {"On", "Off"};
-constexpr std::string_view kTrueFalse[] = {"True", "False"};
+// Unity accepts either pair of words for every boolean command.
+constexpr std::string_view kBooleans[] = {"On", "Off", "True", "False"};
+struct BooleanSpelling {
+  std::string_view yes, no;
+};
+constexpr BooleanSpelling kOnOff{"On", "Off"};
+constexpr BooleanSpelling kTrueFalse{"True", "False"};
 constexpr std::string_view kBlendFactors[] = {
     "One", "Zero", "SrcColor", "SrcAlpha", "SrcAlphaSaturate", "DstColor", "DstAlpha",
     "OneMinusSrcColor", "OneMinusSrcAlpha", "OneMinusDstColor", "OneMinusDstAlpha"};
@@ -48,6 +53,22 @@ std::optional<ir::StateValue> word_value(const ast::Value& v, Values values, std
   }
   d.note({}, "valid values are " + join(values) + ", or a property as in '[_Prop]'");
   return std::nullopt;
+}
+
+// On/Off/True/False, written in the command's own canonical pair.
+std::optional<ir::StateValue> bool_value(const ast::Value& v, BooleanSpelling spelling, std::string_view command,
+                                         Context& ctx) {
+  auto word = word_value(v, kBooleans, command, ctx);
+  if (!word || word->is_property()) return word;
+  bool yes = word->literal == "On" || word->literal == "True";
+  word->literal = std::string(yes ? spelling.yes : spelling.no);
+  return word;
+}
+
+// "ZTest Off" is Unity's alias of "ZTest Always".
+std::optional<ir::StateValue> compare_value(const ast::Value& v, std::string_view command, Context& ctx) {
+  if (v.kind == ast::Value::Kind::word && iequals(v.text, "Off")) return ir::StateValue{"Always", "", v.span};
+  return word_value(v, kCompare, command, ctx);
 }
 
 // An integer literal in [lo, hi], printed canonically.
@@ -129,11 +150,11 @@ class StateLowering {
     check_duplicate(c, name);
     switch (c.kind) {
       case ast::CommandKind::cull: set(state_.cull, word_value(c.values[0], kCull, name, ctx_)); break;
-      case ast::CommandKind::ztest: set(state_.ztest, word_value(c.values[0], kCompare, name, ctx_)); break;
-      case ast::CommandKind::zwrite: set(state_.zwrite, word_value(c.values[0], kOnOff, name, ctx_)); break;
-      case ast::CommandKind::alpha_to_mask: set(state_.alpha_to_mask, word_value(c.values[0], kOnOff, name, ctx_)); break;
-      case ast::CommandKind::zclip: set(state_.zclip, word_value(c.values[0], kTrueFalse, name, ctx_)); break;
-      case ast::CommandKind::conservative: set(state_.conservative, word_value(c.values[0], kTrueFalse, name, ctx_)); break;
+      case ast::CommandKind::ztest: set(state_.ztest, compare_value(c.values[0], name, ctx_)); break;
+      case ast::CommandKind::zwrite: set(state_.zwrite, bool_value(c.values[0], kOnOff, name, ctx_)); break;
+      case ast::CommandKind::alpha_to_mask: set(state_.alpha_to_mask, bool_value(c.values[0], kOnOff, name, ctx_)); break;
+      case ast::CommandKind::zclip: set(state_.zclip, bool_value(c.values[0], kTrueFalse, name, ctx_)); break;
+      case ast::CommandKind::conservative: set(state_.conservative, bool_value(c.values[0], kTrueFalse, name, ctx_)); break;
       case ast::CommandKind::offset:
         set(state_.offset_factor, number_value(c.values[0], name, ctx_));
         set(state_.offset_units, number_value(c.values[1], name, ctx_));

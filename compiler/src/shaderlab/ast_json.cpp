@@ -135,6 +135,7 @@ class AstJson {
   Json category(const ast::Category& c) const {
     Json j;
     j["parent"] = c.parent;
+    if (c.lod) j["lod"] = *c.lod;
     j["tags"] = tags(c.tags);
     j["state"] = state(c.state);
     j["includes"] = programs(c.includes);

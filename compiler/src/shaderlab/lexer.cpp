@@ -154,13 +154,21 @@ Token Lexer::lex_other(uint32_t start) {
   return make(TokenKind::other, start, pos_);
 }
 
+// A string may span lines, as Unity allows (long display names and attribute
+// texts are wrapped in real shaders). One with no closing quote before the
+// end of the file is reported and ends at its own line, so that parsing goes
+// on from the next line.
 Token Lexer::lex_string(uint32_t start) {
   uint32_t i = start + 1;
-  while (i < text_.size() && text_[i] != '"' && text_[i] != '\n') {
-    if (text_[i] == '\\' && i + 1 < text_.size() && text_[i + 1] != '\n') ++i;
+  while (i < text_.size() && text_[i] != '"') {
+    if (text_[i] == '\\' && i + 1 < text_.size()) ++i;
     ++i;
   }
-  bool closed = i < text_.size() && text_[i] == '"';
+  bool closed = i < text_.size();
+  if (!closed) {
+    size_t line_end = text_.find('\n', start);
+    i = line_end == std::string_view::npos ? uint32_t(text_.size()) : uint32_t(line_end);
+  }
   pos_ = closed ? i + 1 : i;
   Token t = make(TokenKind::string, start, pos_);
   t.inner_begin = start + 1;
@@ -168,7 +176,8 @@ Token Lexer::lex_string(uint32_t start) {
   if (!closed) {
     if (Diagnostic* d = reporter_.error(DiagId::parse_unterminated_string, reporter_.span(start, start + 1),
                                         "unterminated string")) {
-      d->note(reporter_.span(i, i), "expected '\"' before the end of the line");
+      d->note(reporter_.span(uint32_t(text_.size()), uint32_t(text_.size())),
+              "expected '\"' before the end of the file");
     }
   }
   return t;
@@ -189,10 +198,20 @@ std::string Lexer::string_value(const Token& t) const {
   return out;
 }
 
+// "[...]" ends at the first ']' outside quotes, on the same line unless a
+// quoted argument spans lines.
 Token Lexer::lex_bracket(uint32_t start) {
   uint32_t i = start + 1;
-  while (i < text_.size() && text_[i] != ']' && text_[i] != '\n') ++i;
+  bool quoted = false;
+  while (i < text_.size() && (quoted || (text_[i] != ']' && text_[i] != '\n'))) {
+    if (text_[i] == '"') quoted = !quoted;
+    ++i;
+  }
   bool closed = i < text_.size() && text_[i] == ']';
+  if (!closed && quoted) {  // an open quote: stop at the bracket's own line
+    size_t line_end = text_.find('\n', start);
+    i = line_end == std::string_view::npos ? uint32_t(text_.size()) : uint32_t(line_end);
+  }
   pos_ = closed ? i + 1 : i;
   Token t = make(TokenKind::bracket, start, pos_);
   t.inner_begin = start + 1;

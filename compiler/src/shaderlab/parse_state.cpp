@@ -247,34 +247,83 @@ bool Parser::parse_stencil(ast::Command& c) {
   return true;
 }
 
-// Fixed-function commands have no effect on programmable passes; they are
-// parsed by shape so that what follows them still parses.
+// Fixed-function commands keep their arguments (sema lowers them into a
+// generated program for a Pass without one); block bodies are kept as tokens,
+// since "combine texture * primary" is not ShaderLab's command grammar.
 bool Parser::parse_legacy_command(const ScopeRefs& scope, const Token& keyword) {
   std::string_view word = lexer_.text(keyword);
   std::string context = "after '" + std::string(word) + "'";
+  ast::LegacyCommand c;
+  c.name = std::string(word);
+  c.keyword_span = span(keyword);
+  auto add_value = [&] {
+    auto v = parse_value(context);
+    if (v) c.values.push_back(std::move(*v));
+    return v.has_value();
+  };
   bool ok = true;
   if (iequals(word, "Fog") || iequals(word, "Material") || iequals(word, "BindChannels") ||
       iequals(word, "SetTexture")) {
-    if (iequals(word, "SetTexture")) ok = parse_value(context).has_value();
+    if (iequals(word, "SetTexture")) ok = add_value();
     std::optional<Token> open;
     if (ok) open = expect(TokenKind::lbrace, "'{'", context);
-    ok = open && skip_balanced(*open, true);
+    ok = open && collect_legacy_body(*open, c);
   } else if (iequals(word, "Color") && at(TokenKind::lparen)) {
-    take();  // "Color (r, g, b, a)"
-    std::vector<double> numbers;
-    ok = parse_number_list(numbers, context) && expect(TokenKind::rparen, "')'", context).has_value();
+    Token paren = take();  // "Color (r, g, b, a)"
+    ok = parse_number_list(c.color, context) && expect(TokenKind::rparen, "')'", context).has_value();
+    c.color_span = span(paren.begin, last_end_);
   } else {
-    auto v = parse_value(context);
-    ok = v.has_value();
+    ok = add_value();
     // "AlphaTest Greater [_Cutoff]": a comparison and a reference value.
-    if (ok && iequals(word, "AlphaTest") && !iequals(v->text, "Off") && !current_.line_start &&
+    if (ok && iequals(word, "AlphaTest") && !iequals(c.values[0].text, "Off") && !current_.line_start &&
         (at(TokenKind::number) || at(TokenKind::bracket))) {
-      ok = parse_value(context).has_value();
+      ok = add_value();
     }
   }
   if (!ok) skip_rest_of_command();
+  c.span = span(keyword.begin, std::max(last_end_, keyword.end));
   note_ignored(*scope.ignored, keyword, last_end_, true);
+  if (ok) scope.ignored->back().legacy = std::move(c);
   return ok;
+}
+
+// The tokens up to the '}' matching `open` (already taken). Legacy blocks do
+// not nest in Unity's grammar, but nested braces are kept balanced anyway.
+bool Parser::collect_legacy_body(const Token& open, ast::LegacyCommand& c) {
+  c.has_body = true;
+  uint32_t level = 1;
+  while (!reporter_.stopped()) {
+    if (at(TokenKind::eof)) {
+      report_unclosed(open, "");
+      return false;
+    }
+    Token t = take();
+    if (t.kind == TokenKind::rbrace && --level == 0) break;
+    if (t.kind == TokenKind::lbrace && ++level + depth_ > options_.max_depth) {
+      reporter_.error(DiagId::parse_nesting_too_deep, span(t),
+                      "blocks are nested too deeply (the limit is " + std::to_string(options_.max_depth) + ")");
+      return false;
+    }
+    ast::LegacyToken lt;
+    lt.span = span(t);
+    lt.line_start = t.line_start;
+    switch (t.kind) {
+      case TokenKind::word: lt.kind = ast::LegacyToken::Kind::word; break;
+      case TokenKind::number:
+        lt.kind = ast::LegacyToken::Kind::number;
+        lt.number = t.number;
+        break;
+      case TokenKind::string: lt.kind = ast::LegacyToken::Kind::string; break;
+      case TokenKind::bracket: lt.kind = ast::LegacyToken::Kind::property; break;
+      default: lt.kind = ast::LegacyToken::Kind::symbol; break;
+    }
+    if (t.kind == TokenKind::string) lt.text = lexer_.string_value(t);
+    else if (t.kind == TokenKind::bracket) lt.text = std::string(trim(lexer_.inner(t)));
+    else lt.text = std::string(lexer_.text(t));
+    c.body.push_back(std::move(lt));
+  }
+  c.body_span = span(open.begin, last_end_);
+  return true;
 }
 
 void Parser::parse_ignored_block(std::vector<ast::IgnoredCommand>& out, const Token& keyword) {
@@ -286,10 +335,10 @@ void Parser::parse_ignored_block(std::vector<ast::IgnoredCommand>& out, const To
 
 void Parser::note_ignored(std::vector<ast::IgnoredCommand>& out, const Token& keyword, uint32_t end, bool legacy) {
   std::string name(lexer_.text(keyword));
-  out.push_back({name, span(keyword.begin, std::max(end, keyword.end))});
+  out.push_back({name, span(keyword.begin, std::max(end, keyword.end)), std::nullopt});
   if (legacy) {
     reporter_.report(DiagId::parse_legacy_command, span(keyword),
-                     "'" + name + "' is a legacy fixed-function command; it has no effect and is ignored");
+                     "'" + name + "' is a legacy fixed-function command; it only affects a Pass without a program block");
   } else {
     reporter_.report(DiagId::parse_ignored_command, span(keyword), "'" + name + "' is not used by facet; ignored");
   }

@@ -269,6 +269,10 @@ void Parser::parse_category(ast::Shader& shader, int parent, const Token& keywor
     }
     // Refer to the category by index: nested categories grow the vector.
     ast::Category& cat = shader.categories[size_t(index)];
+    if (at_word("LOD")) {
+      parse_lod(cat.lod, cat.lod_span, take());
+      return true;
+    }
     if (at(TokenKind::program) && current_.is_include) {
       cat.includes.push_back(make_program(take()));
       return true;
@@ -302,22 +306,22 @@ bool Parser::parse_subshader_item(ast::SubShader& sub) {
   } else if (at_word("GrabPass")) {
     parse_grab_pass(sub, take());
   } else if (at_word("LOD")) {
-    parse_lod(sub, take());
+    parse_lod(sub.lod, sub.lod_span, take());
   } else {
     return parse_scope_item({&sub.tags, &sub.tags_brace, &sub.state, &sub.ignored});
   }
   return true;
 }
 
-void Parser::parse_lod(ast::SubShader& sub, const Token& keyword) {
+void Parser::parse_lod(std::optional<int>& lod, SourceSpan& lod_span, const Token& keyword) {
   auto n = expect(TokenKind::number, "a level of detail number", "after 'LOD'");
   if (!n) return skip_rest_of_command();
-  sub.lod_span = span(keyword.begin, n->end);
+  lod_span = span(keyword.begin, n->end);
   if (!(n->number >= 0 && n->number <= 1e9 && n->number == std::floor(n->number))) {
     reporter_.error(DiagId::parse_bad_number, span(*n), "LOD must be a non-negative integer");
     return;
   }
-  sub.lod = int(n->number);
+  lod = int(n->number);
 }
 
 void Parser::parse_pass(ast::SubShader& sub, const Token& keyword) {
@@ -334,6 +338,14 @@ void Parser::parse_pass(ast::SubShader& sub, const Token& keyword) {
       take();
       if (auto name = parse_string("a pass name string", "after 'Name'", &pass.name_span)) pass.name = *name;
       else skip_rest_of_command();
+      return true;
+    }
+    if (at_word("LOD")) {  // Unity accepts LOD in a Pass and ignores it
+      std::optional<int> unused_lod;
+      SourceSpan unused_span;
+      Token keyword = take();
+      parse_lod(unused_lod, unused_span, keyword);
+      note_ignored(pass.ignored, keyword, last_end_, false);
       return true;
     }
     return parse_scope_item({&pass.tags, &pass.tags_brace, &pass.state, &pass.ignored});

@@ -65,7 +65,7 @@ class Parser {
   void parse_category(ast::Shader& shader, int parent, const Token& keyword);
   void parse_subshader(ast::Shader& shader, int category, const Token& keyword);
   bool parse_subshader_item(ast::SubShader& sub);
-  void parse_lod(ast::SubShader& sub, const Token& keyword);
+  void parse_lod(std::optional<int>& lod, SourceSpan& lod_span, const Token& keyword);
   void parse_pass(ast::SubShader& sub, const Token& keyword);
   void add_pass_program(ast::Pass& pass, const Token& program);
   void parse_use_pass(ast::SubShader& sub, const Token& keyword);
@@ -84,6 +84,7 @@ class Parser {
   std::optional<ast::Value> parse_value(std::string_view context);
   bool at_value() const;
   bool parse_legacy_command(const ScopeRefs& scope, const Token& keyword);
+  bool collect_legacy_body(const Token& open, ast::LegacyCommand& c);
   void parse_ignored_block(std::vector<ast::IgnoredCommand>& out, const Token& keyword);
   void note_ignored(std::vector<ast::IgnoredCommand>& out, const Token& keyword, uint32_t end, bool legacy);
 

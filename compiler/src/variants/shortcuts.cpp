@@ -23,6 +23,15 @@ const std::vector<ShortcutDef>& shortcut_table() {
         {"multi_compile_fwdadd_fullshadows",
          {lights, {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"}, {"", "SHADOWS_SOFT"}}},
         {"multi_compile_shadowcaster", {{"SHADOWS_DEPTH", "SHADOWS_CUBE"}}},
+        // Unity's alpha-blended ForwardBase: no shadow keywords.
+        {"multi_compile_fwdbasealpha", {{"DIRECTIONAL"}, {"", "LIGHTPROBE_SH"}}},
+        // The deferred light pass: the light types and their shadows.
+        {"multi_compile_lightpass",
+         {lights, {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"}, {"", "SHADOWS_SOFT"}}},
+        // The screen-space shadow collector: cascade selection and count.
+        {"multi_compile_shadowcollector", {{"", "SHADOWS_SPLIT_SPHERES"}, {"", "SHADOWS_SINGLE_CASCADE"}}},
+        // The deferred G-buffer pass: HDR target and light probes.
+        {"multi_compile_prepassfinal", {{"", "UNITY_HDR_ON"}, {"", "LIGHTPROBE_SH"}}},
         {"multi_compile_fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}}},
         {"multi_compile_instancing", {{"", "INSTANCING_ON"}}},
         {"multi_compile_particles", {{"", "SOFTPARTICLES_ON"}}},
@@ -46,6 +55,10 @@ const std::vector<ModifierDef>& modifier_table() {
       {"nodynlightmap", {}},
       {"nodirlightmap", {}},
       {"noshadowmask", {}},
+      // Unity's ForwardBase vertex lights and light probe proxy volumes are
+      // not keywords of facet's shortcuts either.
+      {"novertexlight", {}},
+      {"nolppv", {}},
   };
   return table;
 }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -29,6 +30,7 @@ struct RawArgs {
   bool merge = false, estimate = false;
   std::string emit_jobs, program;
   bool no_cache = false;
+  std::string unity_version;
 };
 
 // Repeatable options take one value per occurrence (allow_extra_args(false)),
@@ -45,6 +47,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--target-env", raw.target_env, "vulkan1.1 (default), vulkan1.2 or opengl4.5")
       ->check(CLI::IsMember({"vulkan1.1", "vulkan1.2", "opengl4.5"}));
   app.add_option("--stdlib-dir", raw.stdlib_dir, "the stdlib folder (default: the built-in one)");
+  app.add_option("--unity-version", raw.unity_version, "the Unity version to define UNITY_VERSION for, e.g. 2017.4 "
+                                                       "(default 2019.4)");
   app.add_flag("-E", raw.preprocess, "print the preprocessed source of the selected variant");
   app.add_flag("-S", raw.assemble, "print SPIR-V assembly (or --emit's kind) instead of a package");
   app.add_option("--emit", raw.emit, "spirv-asm, spirv, glsl, essl, msl, or source (before preprocessing; implies -S)")
@@ -101,6 +105,7 @@ std::vector<std::string> compile_flags(const RawArgs& raw) {
   flags.push_back("--target-env=" + raw.target_env);
   if (raw.debug_info) flags.push_back("-g");
   if (!raw.stdlib_dir.empty()) flags.insert(flags.end(), {"--stdlib-dir", raw.stdlib_dir});
+  if (!raw.unity_version.empty()) flags.insert(flags.end(), {"--unity-version", raw.unity_version});
   if (!raw.no_cache && !raw.cache_dir.empty()) flags.insert(flags.end(), {"--cache-dir", raw.cache_dir});
   if (!raw.no_cache && !raw.cache_url.empty()) flags.insert(flags.end(), {"--remote-cache", raw.cache_url});
   return flags;
@@ -129,6 +134,20 @@ std::optional<std::string> apply_defines(const RawArgs& raw, backend::BackendOpt
     if (name.empty()) return fmt::format("-D needs a macro name, got '{}'", d);
     options.defines.emplace_back(name, eq == std::string::npos ? "1" : d.substr(eq + 1));
   }
+  return std::nullopt;
+}
+
+// "2017.4" -> 201740, "2019.4.31" -> 201949 (the patch digit saturates, as
+// one decimal digit holds it), "6000.0" -> 600000: Unity's UNITY_VERSION.
+std::optional<std::string> apply_unity_version(const std::string& text, backend::BackendOptions& options) {
+  if (text.empty()) return std::nullopt;
+  unsigned major = 0, minor = 0, patch = 0;
+  char tail = 0;
+  int n = std::sscanf(text.c_str(), "%u.%u.%u%c", &major, &minor, &patch, &tail);
+  bool ok = (n == 2 || n == 3) && text.find_first_not_of("0123456789.") == std::string::npos && major >= 5 &&
+            major <= 99999 && minor <= 9;
+  if (!ok) return fmt::format("--unity-version needs a version such as 2017.4 or 2019.4.1, got '{}'", text);
+  options.unity_version = int(major * 100 + minor * 10 + std::min(patch, 9u));
   return std::nullopt;
 }
 
@@ -261,6 +280,9 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.dep_target = raw.dep_target;
   if (error.empty()) {
     if (auto e = apply_defines(raw, args.backend)) error = *e;
+  }
+  if (error.empty()) {
+    if (auto e = apply_unity_version(raw.unity_version, args.backend)) error = *e;
   }
   if (error.empty()) {
     if (auto e = choose_mode(raw, args)) error = *e;
