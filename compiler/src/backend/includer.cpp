@@ -1,5 +1,6 @@
 #include "backend/includer.h"
 
+#include "backend/hlsl_rewrite.h"
 #include "backend/source_assembly.h"
 
 #include <algorithm>
@@ -12,6 +13,12 @@ namespace fs = std::filesystem;
 namespace {
 
 bool is_real_path(const std::string& name) { return !name.empty() && name.front() != '<'; }
+
+// GLSL includes (Unity's .glslinc) get no HLSL rewrites.
+bool is_glsl_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  return ext == ".glslinc" || ext == ".glsl";
+}
 
 }  // namespace
 
@@ -56,6 +63,7 @@ std::vector<std::string> FileIncluder::search_dirs(const std::string& includer) 
 glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path, std::string text, const char* header,
                                                                 const char* includer, bool system) {
   records_.push_back({path, includer ? includer : "", header, system});
+  if (!is_glsl_file(path)) text = rewrite_matrix_swizzles(text);
   texts_.emplace_back(std::move(path), std::move(text));
   const auto& [p, t] = texts_.back();
   return new IncludeResult(p, t.data(), t.size(), nullptr);

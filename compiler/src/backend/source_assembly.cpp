@@ -1,9 +1,12 @@
 #include "backend/source_assembly.h"
 
+#include "backend/hlsl_rewrite.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 namespace facet::backend {
 namespace {
@@ -25,6 +28,34 @@ std::string line_file(const std::string& path) {
 
 size_t count_lines(std::string_view text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
 
+// Unity's own CGIncludes are on the -I path (a folder holding its
+// HLSLSupport.cginc and UnityPBSLighting.cginc).
+bool unity_cgincludes_on_path(const BackendOptions& options) {
+  std::error_code ec;
+  for (const std::string& dir : options.include_dirs) {
+    std::filesystem::path d(dir);
+    if (std::filesystem::is_regular_file(d / "HLSLSupport.cginc", ec) &&
+        std::filesystem::is_regular_file(d / "UnityPBSLighting.cginc", ec)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// What Unity's graphics settings define for a desktop Vulkan player at tier 3
+// with the default project settings. facet's stdlib makes these choices
+// itself (UnityStandardConfig.cginc); Unity's include files expect them.
+constexpr std::string_view kUnityTier3Defines =
+    "#define UNITY_HARDWARE_TIER3 1\n"
+    "#define UNITY_PBS_USE_BRDF1 1\n"
+    "#define UNITY_SPECCUBE_BOX_PROJECTION 1\n"
+    "#define UNITY_SPECCUBE_BLENDING 1\n"
+    "#define UNITY_ENABLE_DETAIL_NORMALMAP 1\n"
+    "#define UNITY_ENABLE_REFLECTION_BUFFERS 1\n"
+    "#define UNITY_USE_DITHER_MASK_FOR_ALPHABLENDED_SHADOWS 1\n"
+    "#define UNITY_ENABLE_NATIVE_SHADOW_LOOKUPS 1\n"
+    "#define UNITY_LIGHTMAP_RGBM_ENCODING 1\n";
+
 void append_defines(std::string& out, const ir::Program& program, Stage stage,
                     const std::vector<std::string>& keywords, const BackendOptions& options) {
   out += fmt::format("#define {} 1\n", stage_define(stage));
@@ -37,6 +68,7 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
     // own HLSLSupport.cginc (given with -I) picks its Vulkan code by these.
     out += "#define UNITY_COMPILER_HLSL 1\n";
     out += "#define UNITY_COMPILER_HLSLCC 1\n";
+    if (unity_cgincludes_on_path(options)) out += kUnityTier3Defines;
   }
   for (const std::string& keyword : keywords) {
     if (!keyword.empty()) out += fmt::format("#define {} 1\n", keyword);
@@ -134,8 +166,13 @@ AssembledSource assemble_source(const ir::Program& program, Stage stage, const s
     out += "#include <UnityShaderUtilities.cginc>\n";
   }
   result.prelude = out;
-  for (const ir::SourceChunk& chunk : program.includes) append_chunk(out, chunk, result.root_name);
-  append_chunk(out, program.body, result.root_name);
+  for (ir::SourceChunk chunk : program.includes) {
+    chunk.text = rewrite_matrix_swizzles(chunk.text);
+    append_chunk(out, chunk, result.root_name);
+  }
+  ir::SourceChunk body = program.body;
+  body.text = rewrite_matrix_swizzles(body.text);
+  append_chunk(out, body, result.root_name);
   return result;
 }
 

@@ -303,7 +303,30 @@ bool SpaceBuilder::claim(const std::string& keyword, SourceSpan span, bool dynam
   return false;
 }
 
+// The same keywords as `set`, ignoring order: a repeat of an earlier pragma.
+const KeywordSet* find_same_set(const std::vector<KeywordSet>& sets, const KeywordSet& set) {
+  auto sorted = [](std::vector<std::string> keywords) {
+    std::sort(keywords.begin(), keywords.end());
+    return keywords;
+  };
+  std::vector<std::string> wanted = sorted(set.keywords);
+  for (const KeywordSet& other : sets) {
+    if (other.stages == set.stages && other.directive == set.directive && sorted(other.keywords) == wanted) {
+      return &other;
+    }
+  }
+  return nullptr;
+}
+
 void SpaceBuilder::add_set(KeywordSet set) {
+  // Unity compiles a keyword set declared twice (a surface shader's own
+  // '#pragma multi_compile_fog' next to the one its lowering adds) once.
+  if (const KeywordSet* same = find_same_set(space_.sets, set)) {
+    diags_.add(DiagId::pragma_repeated_keyword_set, set.span,
+               "'#pragma " + set.pragma + "' repeats the keyword set of an earlier pragma; it adds no variants")
+        .note(same->span, "the same keywords are declared here");
+    return;
+  }
   std::erase_if(set.keywords, [&](const std::string& k) { return !k.empty() && !claim(k, set.span, false); });
   bool any = std::any_of(set.keywords.begin(), set.keywords.end(), [](const std::string& k) { return !k.empty(); });
   if (any) space_.sets.push_back(std::move(set));
