@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libxxhash-dev libzstd-dev
   libtbb-dev libtinyobjloader-dev clang-14 libclang-rt-14-dev libcurl4-openssl-dev libssl-dev glslc
   chromium
+  python3-jsonschema libxml2-utils  # facetc --check's report tests validate SARIF and JUnit with them
 )
 
 missing=()

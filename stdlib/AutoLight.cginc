@@ -12,15 +12,12 @@
 #include "UnityShaderVariables.cginc"
 #include "FacetLight.hlsl"
 #include "FacetShadow.hlsl"
+#include "UnityShadowLibrary.cginc"
 
-#define UNITY_ATTEN_CHANNEL r
+// UNITY_ATTEN_CHANNEL: HLSLSupport.cginc.
 
 // Shadow-coordinate types and shadow-map declarations, as Unity spells them.
-#define unityShadowCoord float
-#define unityShadowCoord2 float2
-#define unityShadowCoord3 float3
-#define unityShadowCoord4 float4
-#define unityShadowCoord4x4 float4x4
+// unityShadowCoord*: UnityShadowLibrary.cginc.
 // UNITY_DECLARE_SHADOWMAP, UNITY_SAMPLE_SHADOW(_PROJ): HLSLSupport.cginc.
 
 // ---- shadows ------------------------------------------------------------------------
@@ -46,6 +43,25 @@
 #define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos)
 #endif
 #define UNITY_SHADOW_W(_w) _w
+#define READ_SHADOW_COORDS(a) a._ShadowCoord
+#define UNITY_READ_SHADOW_COORDS(input) READ_SHADOW_COORDS(input)
+
+// Realtime shadow at a world position (the light's shadow map through
+// unity_WorldToShadow[0]; screenPos is unused: there are no screen-space
+// shadows), mixed with baked occlusion and faded with distance as Unity's
+// forward path does.
+half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos)
+{
+    float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
+    half fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
+    half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
+#if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
+    half realtime = FacetSampleShadow(FacetShadowCoord(worldPos));
+#else
+    half realtime = 1.0;
+#endif
+    return UnityMixRealtimeAndBakedShadows(realtime, baked, fade);
+}
 
 // ---- light coordinates ----------------------------------------------------------
 // LIGHTING_COORDS(idx1, idx2) adds the interpolators (light space position in
@@ -60,6 +76,14 @@
 #define COMPUTE_LIGHT_COORDS(a)
 #define LIGHT_ATTENUATION(a) SHADOW_ATTENUATION(a)
 #endif
+
+// Unity's spot helpers: the cookie's alpha at a projective light coordinate,
+// and the distance falloff (facet's analytic one instead of Unity's
+// _LightTextureB0 ramp).
+inline fixed UnitySpotCookie(unityShadowCoord4 LightCoord) { return tex2D(_LightTexture0, LightCoord.xy / LightCoord.w + 0.5).w; }
+inline fixed UnitySpotAttenuate(unityShadowCoord3 LightCoord) { return FacetDistanceAttenuation(LightCoord); }
+// The light-space position at worldPos, named lightCoord.
+#define DECLARE_LIGHT_COORD(input, worldPos) unityShadowCoord4 lightCoord = mul(unity_WorldToLight, unityShadowCoord4(worldPos, 1))
 
 #define LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) SHADOW_COORDS(idx2)
 #define UNITY_LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) UNITY_SHADOW_COORDS(idx2)

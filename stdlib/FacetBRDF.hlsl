@@ -114,11 +114,11 @@ float FacetFd_Frostbite(float NoV, float NoL, float LoH, float alpha)
 float FacetFd_OrenNayarQualitative(float NoV, float NoL, float LoV, float sigma)
 {
     float s2 = sigma * sigma;
-    float A = 1.0 - 0.5 * s2 / (s2 + 0.33);
-    float B = 0.45 * s2 / (s2 + 0.09);
+    float orenA = 1.0 - 0.5 * s2 / (s2 + 0.33);
+    float orenB = 0.45 * s2 / (s2 + 0.09);
     float s = LoV - NoL * NoV;
     float t = max(max(NoL, NoV), FACET_MIN_NOV);
-    return (A + B * max(s, 0.0) / t) * FACET_INV_PI;
+    return (orenA + orenB * max(s, 0.0) / t) * FACET_INV_PI;
 }
 
 // Oren-Nayar full model (1994): the C1..C3 direct terms and the interreflection
@@ -141,14 +141,14 @@ float FacetFd_OrenNayar(float NoV, float NoL, float LoV, float sigma, float albe
     float sinProduct = sinA * sinB;
     float cosPhi = sinProduct > 1e-6 ? clamp((LoV - NoL * NoV) / sinProduct, -1.0, 1.0) : 0.0;
     float twoBetaOverPi = 2.0 * betaAngle * FACET_INV_PI;
-    float C1 = 1.0 - 0.5 * s2 / (s2 + 0.33);
-    float C2 = 0.45 * s2 / (s2 + 0.09);
-    C2 *= cosPhi >= 0.0 ? sinA : sinA - twoBetaOverPi * twoBetaOverPi * twoBetaOverPi;
+    float coefC1 = 1.0 - 0.5 * s2 / (s2 + 0.33);
+    float coefC2 = 0.45 * s2 / (s2 + 0.09);
+    coefC2 *= cosPhi >= 0.0 ? sinA : sinA - twoBetaOverPi * twoBetaOverPi * twoBetaOverPi;
     float fourAlphaBeta = 4.0 * alphaAngle * betaAngle * FACET_INV_PI * FACET_INV_PI;
-    float C3 = 0.125 * s2 / (s2 + 0.09) * fourAlphaBeta * fourAlphaBeta;
+    float coefC3 = 0.125 * s2 / (s2 + 0.09) * fourAlphaBeta * fourAlphaBeta;
     float tanBeta = sinB / max(cosB, FACET_MIN_NOV);
     float tanHalfSum = (sinA + sinB) / max(cosA + cosB, FACET_MIN_NOV);
-    float direct = C1 + cosPhi * C2 * tanBeta + (1.0 - abs(cosPhi)) * C3 * tanHalfSum;
+    float direct = coefC1 + cosPhi * coefC2 * tanBeta + (1.0 - abs(cosPhi)) * coefC3 * tanHalfSum;
     float inter = 0.17 * albedo * s2 / (s2 + 0.13) * (1.0 - cosPhi * twoBetaOverPi * twoBetaOverPi);
     return albedo * FACET_INV_PI * (direct + inter);
 }
@@ -385,8 +385,8 @@ float FacetSpecular_AshikhminShirley(float NoV, float NoL, float NoH, float HoV,
     float y2 = HoY * HoY;
     float n = max((nu * x2 + nv * y2) / max(x2 + y2, 1e-12), 1e-4);
     float norm = sqrt((nu + 1.0) * (nv + 1.0)) * (0.125 * FACET_INV_PI);
-    float F = FacetF_Schlick(rs, 1.0, HoV);
-    return norm * F * pow(max(NoH, 0.0), n) / max(HoV * max(NoV, NoL), 1e-6);
+    float fresnel = FacetF_Schlick(rs, 1.0, HoV);
+    return norm * fresnel * pow(max(NoH, 0.0), n) / max(HoV * max(NoV, NoL), 1e-6);
 }
 // Ashikhmin-Shirley's coupled diffuse (energy left over by a specular rs).
 float FacetFd_AshikhminShirley(float NoV, float NoL, float rd, float rs)
@@ -409,9 +409,9 @@ float FacetSpecular_Ward(float NoV, float NoL, float NoH, float HoX, float HoY, 
 // ---- multiscatter energy compensation -------------------------------------------------
 // Scales single-scatter specular by 1 + f0 (1/E - 1), E = the directional albedo
 // of the lobe with F = 1 (dfg.y of the DFG table). Depends on v only: not reciprocal.
-float3 FacetEnergyCompensation(float3 f0, float E)
+float3 FacetEnergyCompensation(float3 f0, float directionalAlbedo)
 {
-    return 1.0 + f0 * (1.0 / E - 1.0);
+    return 1.0 + f0 * (1.0 / directionalAlbedo - 1.0);
 }
 
 // ---- translucency ------------------------------------------------------------------------
@@ -421,8 +421,8 @@ float FacetTranslucency(float3 n, float3 v, float3 l, float distortion, float po
                         float ambient, float thickness)
 {
     float3 h = l + n * distortion;
-    float I = pow(saturate(dot(v, -h)), max(power, 1e-4)) * scale;
-    return (I + ambient) * thickness;
+    float intensity = pow(saturate(dot(v, -h)), max(power, 1e-4)) * scale;
+    return (intensity + ambient) * thickness;
 }
 
 // ---- assembled lobes (vector inputs; robust on the hard-case grid) ------------------------

@@ -109,6 +109,10 @@ cbuffer FacetPerLightUnity : register(b3, space1)
     float4 unity_LightPosition[8];      // view-space (position, 1) or (-direction, 0)
     float4 unity_LightAtten[8];         // x = cos(spot/2), y = 1/cos(spot/4), z = quadratic attenuation, w = range squared
     float4 unity_SpotDirection[8];      // view-space spot direction
+    float3 unity_LightColor0;           // old names of the first four vertex-light colours
+    float3 unity_LightColor1;
+    float3 unity_LightColor2;
+    float3 unity_LightColor3;
     float4 unity_OcclusionMaskSelector; // shadow-mask channel of the light
     float4 unity_ShadowSplitSpheres[4]; // cascades
     float4 unity_ShadowSplitSqRadii;

@@ -72,12 +72,12 @@ float3 FacetBRDF_Disney(FacetDisneyMaterial m, float3 l, float3 v, float3 n, flo
                             m.baseColor, m.metallic);
     float3 sheenColor = lerp(float3(1.0, 1.0, 1.0), tint, m.sheenTint);
 
-    float FL = FacetDisneySchlickWeight(NoL);
-    float FV = FacetDisneySchlickWeight(NoV);
+    float fresnelL = FacetDisneySchlickWeight(NoL);
+    float fresnelV = FacetDisneySchlickWeight(NoV);
     float fd90 = 0.5 + 2.0 * LoH * LoH * m.roughness;
-    float Fd = lerp(1.0, fd90, FL) * lerp(1.0, fd90, FV);
+    float Fd = lerp(1.0, fd90, fresnelL) * lerp(1.0, fd90, fresnelV);
     float fss90 = LoH * LoH * m.roughness;
-    float Fss = lerp(1.0, fss90, FL) * lerp(1.0, fss90, FV);
+    float Fss = lerp(1.0, fss90, fresnelL) * lerp(1.0, fss90, fresnelV);
     float ss = 1.25 * (Fss * (1.0 / (NoL + NoV) - 0.5) + 0.5);
 
     float aspect = sqrt(1.0 - 0.9 * m.anisotropic);
@@ -85,15 +85,15 @@ float3 FacetBRDF_Disney(FacetDisneyMaterial m, float3 l, float3 v, float3 n, flo
     float alphaX = max(0.001, r2 / aspect);
     float alphaY = max(0.001, r2 * aspect);
     float Ds = FacetD_GGXAnisotropic(NoH, dot(h, x), dot(h, y), alphaX, alphaY);
-    float FH = FacetDisneySchlickWeight(LoH);
-    float3 Fs = lerp(specular0, float3(1.0, 1.0, 1.0), FH);
+    float fresnelH = FacetDisneySchlickWeight(LoH);
+    float3 Fs = lerp(specular0, float3(1.0, 1.0, 1.0), fresnelH);
     float Vs = FacetDisneySmithGGXAnisotropic(NoL, dot(l, x), dot(l, y), alphaX, alphaY) *
                FacetDisneySmithGGXAnisotropic(NoV, dot(v, x), dot(v, y), alphaX, alphaY);
 
-    float3 Fsheen = FH * m.sheen * sheenColor;
+    float3 Fsheen = fresnelH * m.sheen * sheenColor;
 
     float Dr = FacetD_GTR1(NoH, lerp(0.1, 0.001, m.clearcoatGloss));
-    float Fr = lerp(0.04, 1.0, FH);
+    float Fr = lerp(0.04, 1.0, fresnelH);
     float Vr = FacetDisneySmithGGX(NoL, 0.25) * FacetDisneySmithGGX(NoV, 0.25);
 
     float3 diffuse = (FACET_INV_PI * lerp(Fd, ss, m.subsurface) * m.baseColor + Fsheen) * (1.0 - m.metallic);

@@ -28,13 +28,13 @@ float2 FacetEnvBRDFApproxAB(float perceptualRoughness, float NoV)
     const float4 c1 = float4(1.0, 0.0425, 1.04, -0.04);
     float4 r = perceptualRoughness * c0 + c1;
     float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
-    float2 AB = float2(-1.04, 1.04) * a004 + r.zw;
-    return max(AB, 0.0);
+    float2 scaleBias = float2(-1.04, 1.04) * a004 + r.zw;
+    return max(scaleBias, 0.0);
 }
 float3 FacetEnvBRDFApprox(float3 f0, float perceptualRoughness, float NoV)
 {
-    float2 AB = FacetEnvBRDFApproxAB(perceptualRoughness, NoV);
-    return f0 * AB.x + AB.y;
+    float2 scaleBias = FacetEnvBRDFApproxAB(perceptualRoughness, NoV);
+    return f0 * scaleBias.x + scaleBias.y;
 }
 
 // The DFG table in the multiscatter layout: x = integral of V F_c <n.l>,

@@ -47,11 +47,11 @@ float FacetSmoothnessToRoughness(float smoothness) { return (1.0 - smoothness) *
 
 // ---- Fresnel ------------------------------------------------------------------
 // Schlick: F0 + (1 - F0)(1 - cos)^5.
-float3 FacetStdFresnelTerm(float3 F0, float cosA) { return F0 + (1.0 - F0) * FacetStdPow5(1.0 - cosA); }
+float3 FacetStdFresnelTerm(float3 f0, float cosA) { return f0 + (1.0 - f0) * FacetStdPow5(1.0 - cosA); }
 // Schlick between F0 and a chosen grazing value F90.
-float3 FacetStdFresnelLerp(float3 F0, float3 F90, float cosA) { return lerp(F0, F90, FacetStdPow5(1.0 - cosA)); }
+float3 FacetStdFresnelLerp(float3 f0, float3 f90, float cosA) { return lerp(f0, f90, FacetStdPow5(1.0 - cosA)); }
 // The same with a 4th power (BRDF2, BRDF3's indirect term): one multiply less.
-float3 FacetStdFresnelLerpFast(float3 F0, float3 F90, float cosA) { return lerp(F0, F90, FacetStdPow4(1.0 - cosA)); }
+float3 FacetStdFresnelLerpFast(float3 f0, float3 f90, float cosA) { return lerp(f0, f90, FacetStdPow4(1.0 - cosA)); }
 
 // ---- diffuse ------------------------------------------------------------------
 // Burley's diffuse retro-reflection factor (the /pi is left to the caller):
@@ -187,13 +187,13 @@ float4 FacetStandardBRDF1(float3 diffColor, float3 specColor, float oneMinusRefl
 #if UNITY_BRDF_GGX
     // Roughness 0 would make the highlight vanish (an infinitely thin peak).
     roughness = max(roughness, 0.002);
-    float V = FacetStdSmithJointGGXVisibilityTerm(nl, nv, roughness);
-    float D = FacetStdGGXTerm(nh, roughness);
+    float visTerm = FacetStdSmithJointGGXVisibilityTerm(nl, nv, roughness);
+    float ndfTerm = FacetStdGGXTerm(nh, roughness);
 #else
-    float V = FacetStdSmithBeckmannVisibilityTerm(nl, nv, roughness);
-    float D = FacetStdNDFBlinnPhongNormalizedTerm(nh, FacetStdPerceptualRoughnessToSpecPower(perceptualRoughness));
+    float visTerm = FacetStdSmithBeckmannVisibilityTerm(nl, nv, roughness);
+    float ndfTerm = FacetStdNDFBlinnPhongNormalizedTerm(nh, FacetStdPerceptualRoughnessToSpecPower(perceptualRoughness));
 #endif
-    float specularTerm = V * D * 3.14159265358979323846;
+    float specularTerm = visTerm * ndfTerm * 3.14159265358979323846;
 #ifdef UNITY_COLORSPACE_GAMMA
     specularTerm = sqrt(max(1e-4, specularTerm));
 #endif

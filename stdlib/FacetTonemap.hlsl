@@ -22,8 +22,8 @@ float3 FacetTonemapReinhardExtended(float3 x, float white)
 // exposure bias 2, white point 11.2.
 float3 FacetHableCurve(float3 x)
 {
-    const float A = 0.15, B = 0.50, C = 0.10, D = 0.20, E = 0.02, F = 0.30;
-    return (x * (A * x + C * B) + D * E) / (x * (A * x + B) + D * F) - E / F;
+    const float shoulderA = 0.15, linearB = 0.50, angleC = 0.10, toeD = 0.20, toeNumE = 0.02, toeDenF = 0.30;
+    return (x * (shoulderA * x + angleC * linearB) + toeD * toeNumE) / (x * (shoulderA * x + linearB) + toeD * toeDenF) - toeNumE / toeDenF;
 }
 float3 FacetTonemapHable(float3 x)
 {

@@ -153,6 +153,8 @@
 // Old single-channel alpha textures.
 #define UNITY_SAMPLE_1CHANNEL(x, y) tex2D(x, y).a
 #define UNITY_ALPHA_CHANNEL a
+// The channel of Unity's light falloff textures.
+#define UNITY_ATTEN_CHANNEL r
 
 // Framebuffer fetch is not available: inputs are textures read at the
 // pixel position.
@@ -162,8 +164,8 @@
 #define UNITY_DECLARE_FRAMEBUFFER_INPUT_UINT(idx) Texture2D<uint4> _UnityFBInput##idx
 #define UNITY_READ_FRAMEBUFFER_INPUT(idx, v2fname) _UnityFBInput##idx.Load(uint3((v2fname).xy, 0))
 
-// Compiler, tessellation and keyword defaults.
-#define UNITY_COMPILER_HLSL 1
+// Tessellation and keyword defaults (UNITY_COMPILER_HLSL comes from the
+// prelude, as Unity's compiler defines it).
 #define UNITY_CAN_COMPILE_TESSELLATION 1
 #define UNITY_domain domain
 #define UNITY_partitioning partitioning

@@ -235,6 +235,12 @@ fixed3 UnpackNormalWithScale(fixed4 packednormal, float scale)
     return n;
 }
 inline half3 DecodeHDR(half4 data, half4 decodeInstructions) { return FacetDecodeHDR(data, decodeInstructions); }
+// Unity 6's form with the colour space as an argument: gamma skips the exponent.
+inline half3 DecodeHDR(half4 data, half4 decodeInstructions, int colorspaceIsGamma)
+{
+    half alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;
+    return colorspaceIsGamma ? (decodeInstructions.x * alpha) * data.rgb : FacetDecodeHDR(data, decodeInstructions);
+}
 // RGBM with a maximum range: rgb / alpha with alpha quantised up to 8 bits.
 half4 UnityEncodeRGBM(half3 color, float maxRGBM)
 {
@@ -514,6 +520,7 @@ float4 UnityApplyLinearShadowBias(float4 clipPos)
 #else
 // Directional and spot lights: depth only.
 #define V2F_SHADOW_CASTER_NOPOS
+#define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define TRANSFER_SHADOW_CASTER_NOPOS_LEGACY(o, opos) \
     opos = UnityObjectToClipPos(v.vertex.xyz); opos = UnityApplyLinearShadowBias(opos);
 #define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \

@@ -33,4 +33,8 @@ half3 Unity_GlossyEnvironment(samplerCUBE tex, half4 hdr, Unity_GlossyEnvironmen
     return DecodeHDR(rgbm, hdr);
 }
 
+// The deprecated names of this file (UnityDeprecated.cginc).
+#define INCLUDE_UNITY_IMAGE_BASED_LIGHTING_DEPRECATED
+#include "UnityDeprecated.cginc"
+
 #endif // UNITY_IMAGE_BASED_LIGHTING_INCLUDED

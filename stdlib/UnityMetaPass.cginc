@@ -36,11 +36,11 @@ float4 UnityMetaVertexPosition(float4 vertex, float2 uv1, float2 uv2, float4 lig
     return UnityObjectToClipPos(vertex);
 }
 
-half4 UnityMetaFragment(UnityMetaInput IN)
+half4 UnityMetaFragment(UnityMetaInput metaIn)
 {
     half4 res = 0;
-    if (unity_MetaFragmentControl.x > 0) res = half4(saturate(IN.Albedo), 1);
-    if (unity_MetaFragmentControl.y > 0) res = half4(IN.Emission, 1);
+    if (unity_MetaFragmentControl.x > 0) res = half4(saturate(metaIn.Albedo), 1);
+    if (unity_MetaFragmentControl.y > 0) res = half4(metaIn.Emission, 1);
     return res;
 }
 

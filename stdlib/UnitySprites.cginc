@@ -34,14 +34,14 @@ struct v2f
 // Mirrors the sprite in x and/or y (flip = +-1 per axis) in object space.
 inline float4 UnityFlipSprite(in float3 pos, in fixed2 flip) { return float4(pos.xy * flip, pos.z, 1.0); }
 
-v2f SpriteVert(appdata_t IN)
+v2f SpriteVert(appdata_t input)
 {
     v2f o;
-    UNITY_SETUP_INSTANCE_ID(IN);
+    UNITY_SETUP_INSTANCE_ID(input);
     UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
-    o.vertex = UnityObjectToClipPos(UnityFlipSprite(IN.vertex.xyz, _Flip));
-    o.texcoord = IN.texcoord;
-    o.color = IN.color * _Color * _RendererColor;
+    o.vertex = UnityObjectToClipPos(UnityFlipSprite(input.vertex.xyz, _Flip));
+    o.texcoord = input.texcoord;
+    o.color = input.color * _Color * _RendererColor;
 #ifdef PIXELSNAP_ON
     o.vertex = UnityPixelSnap(o.vertex);
 #endif
@@ -61,9 +61,9 @@ fixed4 SampleSpriteTexture(float2 uv)
 }
 
 // Premultiplied output (the sprite shaders blend One OneMinusSrcAlpha).
-fixed4 SpriteFrag(v2f IN) : SV_Target
+fixed4 SpriteFrag(v2f input) : SV_Target
 {
-    fixed4 c = SampleSpriteTexture(IN.texcoord) * IN.color;
+    fixed4 c = SampleSpriteTexture(input.texcoord) * input.color;
     c.rgb *= c.a;
     return c;
 }

@@ -29,9 +29,9 @@ float PerceptualRoughnessToRoughness(float perceptualRoughness)
 }
 half RoughnessToPerceptualRoughness(half roughness) { return FacetRoughnessToPerceptualRoughness(roughness); }
 
-inline half3 FresnelTerm(half3 F0, half cosA) { return FacetStdFresnelTerm(F0, cosA); }
-inline half3 FresnelLerp(half3 F0, half3 F90, half cosA) { return FacetStdFresnelLerp(F0, F90, cosA); }
-inline half3 FresnelLerpFast(half3 F0, half3 F90, half cosA) { return FacetStdFresnelLerpFast(F0, F90, cosA); }
+inline half3 FresnelTerm(half3 f0, half cosA) { return FacetStdFresnelTerm(f0, cosA); }
+inline half3 FresnelLerp(half3 f0, half3 f90, half cosA) { return FacetStdFresnelLerp(f0, f90, cosA); }
+inline half3 FresnelLerpFast(half3 f0, half3 f90, half cosA) { return FacetStdFresnelLerpFast(f0, f90, cosA); }
 
 half DisneyDiffuse(half NdotV, half NdotL, half LdotH, half perceptualRoughness)
 {
@@ -72,5 +72,9 @@ half4 BRDF3_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivit
     return FacetStandardBRDF3(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir, light.dir,
                               light.color, gi.diffuse, gi.specular);
 }
+
+// The deprecated names of this file (UnityDeprecated.cginc).
+#define INCLUDE_UNITY_STANDARD_BRDF_DEPRECATED
+#include "UnityDeprecated.cginc"
 
 #endif // UNITY_STANDARD_BRDF_INCLUDED

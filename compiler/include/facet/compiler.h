@@ -52,6 +52,10 @@ struct CompileOptions {
   bool strict_selection = false;
   // Refuse to compile more variants than this for one pass (0: no limit).
   uint64_t max_variants_per_pass = 65536;
+  // Also build the variants of Unity's shortcut keywords that facet's
+  // renderer never enables (lightmaps, shadowmask, vertex lights); they are
+  // counted and reported either way (facetc --build-unreachable).
+  bool build_unreachable = false;
   // Worker threads (0: one per core). The package bytes do not depend on it.
   unsigned jobs = 0;
   // The compile cache folder (facet/cache.h); empty: no cache.

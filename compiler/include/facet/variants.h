@@ -56,12 +56,28 @@ struct KeywordRule {
   SourceSpan span;
 };
 
+// Unity's shortcuts are curated lists, not products: multi_compile_fwdbase
+// has 83 of the 512 combinations of its nine keywords. Its keywords are sets
+// of the space like any others, and this lists the combinations of those sets
+// that exist; every other combination of them is not a variant.
+struct KeywordCombinations {
+  std::vector<size_t> sets;                       // ascending indices into KeywordSpace::sets
+  std::vector<std::vector<uint32_t>> choices;     // per combination, the choice of each of `sets`
+  std::string pragma;                             // the shortcut, e.g. "multi_compile_fwdbase"
+  SourceSpan span;
+};
+
 // The keyword space of one program (one pass).
 struct KeywordSpace {
   std::vector<KeywordSet> sets;                 // variant-producing sets, in declaration order
   std::vector<std::string> dynamic_branch_keywords;  // uniform bools, no variants
   std::vector<std::string> skip_variants;       // keywords never enabled
   std::vector<KeywordRule> rules;               // keyword_rule pragmas, in order
+  std::vector<KeywordCombinations> combinations;  // curated shortcuts; sets in no entry combine freely
+  // Keywords of Unity's shortcuts that facet's renderer never enables
+  // (lightmaps, shadowmask, vertex lights, ...): counted as Unity counts
+  // them, reported as unreachable, and not built by default.
+  std::vector<std::string> unreachable_keywords;
 };
 
 // VariantKey::choice value meaning "this set contributes no keyword": every
@@ -108,10 +124,11 @@ VariantKey project(const KeywordSpace& space, const VariantKey& key, Stage stage
 // Unity's counting ladder for one pass or one stage of it; each rung is at
 // most the one before. Exact at any size.
 struct VariantCounts {
-  BigCount full;             // product of the set sizes
+  BigCount full;             // product of the set sizes (the listed combinations of curated shortcuts)
   BigCount after_skip;       // skip_variants applied
   BigCount after_materials;  // shader_feature sets restricted to the combinations
                              // materials use; equals after_skip without materials
+  BigCount reachable;        // after_materials without unreachable_keywords: what facet builds
 };
 
 struct CountOptions {
@@ -131,6 +148,7 @@ struct EnumerateOptions {
   std::optional<Stage> stage;        // per-stage view: distinct projections (see project())
   bool apply_skip_variants = true;
   std::optional<std::vector<KeywordList>> materials;  // as CountOptions::materials
+  bool drop_unreachable = false;     // leave out variants with KeywordSpace::unreachable_keywords
   uint64_t max_variants = 65536;     // more than this is an error, never a huge allocation
 };
 

@@ -63,6 +63,7 @@ std::vector<std::string> FileIncluder::search_dirs(const std::string& includer) 
 glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path, std::string text, const char* header,
                                                                 const char* includer, bool system) {
   records_.push_back({path, includer ? includer : "", header, system});
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark: glslang rejects it
   if (!is_glsl_file(path)) text = rewrite_matrix_swizzles(text);
   texts_.emplace_back(std::move(path), std::move(text));
   const auto& [p, t] = texts_.back();

@@ -154,12 +154,27 @@ std::string constant_text(const Compiler& c, spirv_cross::ConstantID id) {
   }
 }
 
+// GLSL vertex inputs carry no semantic; the mesh attribute of their location
+// in facet's fixed vertex layout (the HLSL semantic table) stands in for it,
+// so that the runtime feeds a GLSL program as it feeds an HLSL one.
+std::string semantic_of_vertex_location(uint32_t location) {
+  static const char* const kSemantics[] = {"POSITION", "NORMAL", "TANGENT", "COLOR"};
+  if (location < 4) return kSemantics[location];
+  if (location < 12) return "TEXCOORD" + std::to_string(location - 4);
+  return "";
+}
+
 StageReflection reflect_with(const Compiler& c, const ReflectOptions& options) {
   StageReflection r;
   r.stage = options.stage;
   r.entry_point = options.entry_point;
   spirv_cross::ShaderResources res = c.get_shader_resources();
   r.inputs = interface_of(c, res.stage_inputs, options.hlsl);
+  if (!options.hlsl && options.stage == Stage::vertex) {
+    for (StageVariable& v : r.inputs) {
+      if (v.semantic.empty()) v.semantic = semantic_of_vertex_location(v.location);
+    }
+  }
   r.outputs = interface_of(c, res.stage_outputs, options.hlsl);
   for (const auto& u : res.uniform_buffers) r.uniform_blocks.push_back(block_of(c, u, false, options.hlsl));
   std::sort(r.uniform_blocks.begin(), r.uniform_blocks.end(),

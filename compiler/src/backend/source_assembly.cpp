@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <set>
 
 namespace facet::backend {
 namespace {
@@ -66,8 +69,8 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
   if (program.language != ir::ProgramLanguage::glsl) {
     // Unity compiles Vulkan shaders with an HLSL compiler and HLSLcc; Unity's
     // own HLSLSupport.cginc (given with -I) picks its Vulkan code by these.
-    out += "#define UNITY_COMPILER_HLSL 1\n";
-    out += "#define UNITY_COMPILER_HLSLCC 1\n";
+    out += "#define UNITY_COMPILER_HLSL\n";
+    out += "#define UNITY_COMPILER_HLSLCC\n";
     if (unity_cgincludes_on_path(options)) out += kUnityTier3Defines;
   }
   for (const std::string& keyword : keywords) {
@@ -108,6 +111,255 @@ void append_chunk(std::string& out, const ir::SourceChunk& chunk, const std::str
   if (chunk.text.empty() || chunk.text.back() != '\n') out += '\n';
 }
 
+// ---- GLSLPROGRAM with Unity's GLSL conventions (docs/language.md §7.3) ------
+// A body without #version, or with GLSL 1.x's or ES 3.0's, is Unity-style GLSL
+// (gl_Vertex, varying, gl_FragColor, texture2D, loose uniforms). It is
+// compiled as GLSL 450 with stdlib/FacetGLSLUnity.glslinc, which maps those
+// names by macros; this code finds which of them the program uses and gives
+// `varying`/`attribute` declarations explicit locations.
+
+bool unity_glsl_version(std::string_view version) {
+  if (version == "300 es") return true;
+  return version.size() == 3 && version[0] == '1' && std::isdigit(static_cast<unsigned char>(version[1])) &&
+         std::isdigit(static_cast<unsigned char>(version[2]));
+}
+
+struct GlslToken {
+  enum Kind { ident, number, punct } kind;
+  size_t begin, end;
+  bool directive;  // on a preprocessor line
+};
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The tokens of a GLSL text outside comments (string literals, which occur in
+// #include and #line, are skipped).
+std::vector<GlslToken> glsl_tokens(std::string_view text) {
+  std::vector<GlslToken> out;
+  bool directive = false, line_start = true;
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i];
+    char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    if (c == '\n') {
+      if (!(i > 0 && text[i - 1] == '\\')) directive = false;
+      line_start = true;
+      ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\\') {
+      ++i;
+    } else if (c == '/' && next == '/') {
+      i = std::min(text.find('\n', i), text.size());
+    } else if (c == '/' && next == '*') {
+      size_t end = text.find("*/", i + 2);
+      i = end == std::string_view::npos ? text.size() : end + 2;
+    } else if (c == '"') {
+      for (++i; i < text.size() && text[i] != '"' && text[i] != '\n'; ++i) {}
+      if (i < text.size() && text[i] == '"') ++i;
+      line_start = false;
+    } else {
+      if (line_start && c == '#') directive = true;
+      line_start = false;
+      size_t begin = i;
+      GlslToken::Kind kind = GlslToken::punct;
+      if (ident_start(c)) {
+        while (i < text.size() && ident_char(text[i])) ++i;
+        kind = GlslToken::ident;
+      } else if (std::isdigit(static_cast<unsigned char>(c))) {
+        while (i < text.size() && (ident_char(text[i]) || text[i] == '.')) ++i;
+        kind = GlslToken::number;
+      } else {
+        ++i;
+      }
+      out.push_back({kind, begin, i, directive});
+    }
+  }
+  return out;
+}
+
+// The names GLSLSupport.glslinc gives a Unity-style program.
+bool is_glsl_support_name(std::string_view name) {
+  static constexpr std::string_view kNames[] = {
+      "gl_ModelViewProjectionMatrix", "gl_ModelViewMatrix", "gl_ModelViewMatrixTranspose", "gl_ModelViewMatrixInverse",
+      "gl_ModelViewMatrixInverseTranspose", "gl_NormalMatrix", "gl_ProjectionMatrix", "gl_ProjectionMatrixInverse",
+      "gl_ModelViewProjectionMatrixTranspose", "unity_ObjectToWorld", "unity_WorldToObject", "unity_MatrixVP",
+      "unity_MatrixV", "unity_MatrixInvV", "unity_MatrixP", "glstate_matrix_projection", "_Object2World",
+      "_World2Object"};
+  return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
+}
+
+// Of those, the ones GLSLSupport.glslinc makes macros of: a program's own
+// `uniform mat4 <name>;` of them is blanked (Unity's GLSLSupport.glslinc
+// declares them; old shaders declare _Object2World themselves).
+bool is_glsl_support_uniform(std::string_view name) {
+  return name.substr(0, 3) != "gl_" && is_glsl_support_name(name);
+}
+
+// Locations one varying takes: a matrix one per column, an array per element.
+uint32_t glsl_location_count(std::string_view type, uint32_t array) {
+  uint32_t per = 1;
+  if (type.size() >= 4 && (type.substr(0, 3) == "mat" || type.substr(0, 4) == "dmat")) {
+    size_t digit = type[0] == 'd' ? 4 : 3;
+    if (digit < type.size() && std::isdigit(static_cast<unsigned char>(type[digit]))) per = uint32_t(type[digit] - '0');
+  }
+  return per * std::max(1u, array);
+}
+
+struct UnityGlslScan {
+  bool vertex = false, normal = false, color = false;
+  bool multitexcoord[4] = {};
+  bool frag_color = false;
+  uint32_t frag_data = 0;  // targets, 0 if unused
+  bool matrices = false, texture_matrix = false;
+  std::map<std::string, uint32_t> varyings;  // name -> locations it takes
+  std::set<std::string> attributes;
+};
+
+struct UnityGlslEdit {
+  size_t at, erase;
+  std::string insert;
+};
+
+// "varying [qualifiers] type name [N];" at token `i`: the name, type and array
+// size; nullopt for other shapes (several declarators, structs), which keep
+// glslang's automatic locations.
+struct IoDeclaration {
+  std::string name, type;
+  uint32_t array = 0;
+};
+std::optional<IoDeclaration> io_declaration(std::string_view text, const std::vector<GlslToken>& t, size_t i) {
+  auto word = [&](size_t k) { return std::string_view(text.data() + t[k].begin, t[k].end - t[k].begin); };
+  static constexpr std::string_view kQualifiers[] = {"highp", "mediump", "lowp", "flat", "smooth", "noperspective",
+                                                     "centroid", "invariant"};
+  size_t k = i + 1;
+  while (k < t.size() && std::find(std::begin(kQualifiers), std::end(kQualifiers), word(k)) != std::end(kQualifiers)) ++k;
+  if (k + 2 >= t.size() || t[k].kind != GlslToken::ident || t[k + 1].kind != GlslToken::ident) return std::nullopt;
+  IoDeclaration d{std::string(word(k + 1)), std::string(word(k)), 0};
+  k += 2;
+  if (k + 2 < t.size() && word(k) == "[" && t[k + 1].kind == GlslToken::number && word(k + 2) == "]") {
+    d.array = uint32_t(std::strtoul(std::string(word(k + 1)).c_str(), nullptr, 10));
+    k += 3;
+  }
+  if (k >= t.size() || word(k) != ";" || t[k].directive) return std::nullopt;
+  return d;
+}
+
+void scan_unity_glsl(std::string_view text, UnityGlslScan& scan) {
+  std::vector<GlslToken> t = glsl_tokens(text);
+  auto word = [&](size_t k) { return std::string_view(text.data() + t[k].begin, t[k].end - t[k].begin); };
+  if (text.find("UnityCG.glslinc") != std::string_view::npos || text.find("GLSLSupport.glslinc") != std::string_view::npos) {
+    scan.matrices = true;
+  }
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i].kind != GlslToken::ident) continue;
+    std::string_view w = word(i);
+    if (w == "gl_Vertex") scan.vertex = true;
+    if (w == "gl_Normal" || w == "TANGENT_SPACE_ROTATION") scan.normal = true;
+    if (w == "gl_Color") scan.color = true;
+    if (w.size() == 17 && w.substr(0, 16) == "gl_MultiTexCoord" && w[16] >= '0' && w[16] <= '3') {
+      scan.multitexcoord[w[16] - '0'] = true;
+    }
+    if (w == "gl_FragColor") scan.frag_color = true;
+    if (w == "gl_FragData") {
+      uint32_t targets = 8;
+      if (i + 3 < t.size() && word(i + 1) == "[" && t[i + 2].kind == GlslToken::number && word(i + 3) == "]") {
+        targets = uint32_t(std::strtoul(std::string(word(i + 2)).c_str(), nullptr, 10)) + 1;
+        targets = std::clamp(targets, 1u, 8u);
+      }
+      scan.frag_data = std::max(scan.frag_data, targets);
+    }
+    if (w == "gl_TextureMatrix") scan.texture_matrix = true;
+    if (is_glsl_support_name(w)) scan.matrices = true;
+    if ((w == "varying" || w == "attribute") && !t[i].directive) {
+      if (std::optional<IoDeclaration> d = io_declaration(text, t, i)) {
+        if (w == "varying") {
+          uint32_t& n = scan.varyings[d->name];
+          n = std::max(n, glsl_location_count(d->type, d->array));
+        } else {
+          scan.attributes.insert(d->name);
+        }
+      }
+    }
+  }
+}
+
+// Locations of the program's varyings (by name, so that stages compiled
+// apart agree) and attributes (Unity's "Tangent" at TANGENT's location 2, the
+// others from 16 on, after facet's fixed vertex inputs).
+std::map<std::string, uint32_t> unity_glsl_locations(const UnityGlslScan& scan, bool attributes) {
+  std::map<std::string, uint32_t> out;
+  if (attributes) {
+    uint32_t next = 16;
+    for (const std::string& name : scan.attributes) out[name] = (name == "Tangent" || name == "tangent") ? 2 : next++;
+  } else {
+    uint32_t next = 0;
+    for (const auto& [name, count] : scan.varyings) {
+      out[name] = next;
+      next += count;
+    }
+  }
+  return out;
+}
+
+// The text with `layout(location = N)` before each `varying`/`attribute`
+// declaration, and with `#extension GL_OES_EGL_image_external...` lines and
+// declarations of GLSLSupport's matrices blanked (line numbers are kept).
+std::string rewrite_unity_glsl(const std::string& text, const UnityGlslScan& scan) {
+  std::vector<GlslToken> t = glsl_tokens(text);
+  auto word = [&](size_t k) { return std::string_view(text.data() + t[k].begin, t[k].end - t[k].begin); };
+  std::map<std::string, uint32_t> varyings = unity_glsl_locations(scan, false);
+  std::map<std::string, uint32_t> attributes = unity_glsl_locations(scan, true);
+  std::vector<UnityGlslEdit> edits;
+  auto blank = [&](size_t begin, size_t end) {
+    std::string spaces;
+    for (size_t k = begin; k < end; ++k) spaces += text[k] == '\n' ? '\n' : ' ';
+    edits.push_back({begin, end - begin, spaces});
+  };
+  for (size_t i = 0; i < t.size(); ++i) {
+    std::string_view w = word(i);
+    if (t[i].directive && w == "#" && i + 2 < t.size() && word(i + 1) == "extension" &&
+        word(i + 2).substr(0, 25) == "GL_OES_EGL_image_external") {
+      size_t end = text.find('\n', t[i].begin);
+      blank(t[i].begin, end == std::string::npos ? text.size() : end);
+      continue;
+    }
+    if (t[i].directive || t[i].kind != GlslToken::ident) continue;
+    if (w == "varying" || w == "attribute") {
+      std::optional<IoDeclaration> d = io_declaration(text, t, i);
+      const auto& table = w == "varying" ? varyings : attributes;
+      if (d && table.count(d->name)) {
+        edits.push_back({t[i].begin, 0, fmt::format("layout(location = {}) ", table.at(d->name))});
+      }
+    } else if (w == "uniform") {
+      // uniform [precision] mat4 <GLSLSupport name>;
+      size_t k = i + 1;
+      if (k < t.size() && (word(k) == "highp" || word(k) == "mediump" || word(k) == "lowp")) ++k;
+      if (k + 2 < t.size() && word(k) == "mat4" && is_glsl_support_uniform(word(k + 1)) && word(k + 2) == ";") {
+        blank(t[i].begin, t[k + 2].end);
+      }
+    }
+  }
+  std::string out = text;
+  std::sort(edits.begin(), edits.end(), [](const auto& a, const auto& b) { return a.at > b.at; });
+  for (const UnityGlslEdit& e : edits) out.replace(e.at, e.erase, e.insert);
+  return out;
+}
+
+// The defines FacetGLSLUnity.glslinc reads, and the include itself.
+void append_unity_glsl_prelude(std::string& out, const UnityGlslScan& scan) {
+  out += "#define FACET_GLSL_UNITY 1\n";
+  if (scan.vertex) out += "#define FACET_GLSL_USES_VERTEX 1\n";
+  if (scan.normal) out += "#define FACET_GLSL_USES_NORMAL 1\n";
+  if (scan.color) out += "#define FACET_GLSL_USES_COLOR 1\n";
+  for (int n = 0; n < 4; ++n) {
+    if (scan.multitexcoord[n]) out += fmt::format("#define FACET_GLSL_USES_MULTITEXCOORD{} 1\n", n);
+  }
+  if (scan.frag_color) out += "#define FACET_GLSL_USES_FRAGCOLOR 1\n";
+  if (scan.frag_data) out += fmt::format("#define FACET_GLSL_USES_FRAGDATA {}\n", scan.frag_data);
+  if (scan.matrices) out += "#define FACET_GLSL_USES_MATRICES 1\n";
+  if (scan.texture_matrix) out += "#define FACET_GLSL_USES_TEXTUREMATRIX 1\n";
+  out += "#include <FacetGLSLUnity.glslinc>\n";
+}
+
 }  // namespace
 
 std::optional<size_t> find_excessive_nesting(std::string_view text, int limit) {
@@ -142,15 +394,28 @@ AssembledSource assemble_source(const ir::Program& program, Stage stage, const s
   std::string& out = result.text;
   if (program.language == ir::ProgramLanguage::glsl) {
     std::string body = program.body.text;
-    out += fmt::format("#version {}\n", take_glsl_version(body));
+    std::string version = take_glsl_version(body);
+    // take_glsl_version blanks the line it takes: an unchanged body had none.
+    bool unity = body == program.body.text || unity_glsl_version(version);
+    UnityGlslScan scan;
+    if (unity) {
+      version = "450";
+      for (const ir::SourceChunk& chunk : program.includes) scan_unity_glsl(chunk.text, scan);
+      scan_unity_glsl(body, scan);
+    }
+    out += fmt::format("#version {}\n", version);
     out += "#extension GL_GOOGLE_include_directive : require\n";
     out += fmt::format("#line {} \"{}\"\n", count_lines(out) + 2, kPreludeName);
     out += fmt::format("#define {} 1\n", upper(stage_name(stage)));
     append_defines(out, program, stage, keywords, options);
+    if (unity) append_unity_glsl_prelude(out, scan);
     result.prelude = out;
-    for (const ir::SourceChunk& chunk : program.includes) append_chunk(out, chunk, result.root_name);
+    for (ir::SourceChunk chunk : program.includes) {
+      if (unity) chunk.text = rewrite_unity_glsl(chunk.text, scan);
+      append_chunk(out, chunk, result.root_name);
+    }
     ir::SourceChunk main = program.body;
-    main.text = std::move(body);
+    main.text = unity ? rewrite_unity_glsl(body, scan) : std::move(body);
     append_chunk(out, main, result.root_name);
     return result;
   }

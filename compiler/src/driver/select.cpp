@@ -144,6 +144,7 @@ Result<std::vector<variants::VariantKey>> Compiler::select_variants(const Select
                                                                     const CompileOptions& options,
                                                                     Diagnostics& diags, uint64_t* stripped) const {
   variants::EnumerateOptions enumerate{.materials = options.materials,
+                                       .drop_unreachable = !options.build_unreachable,
                                        .max_variants = options.max_variants_per_pass == 0
                                                            ? UINT64_MAX
                                                            : options.max_variants_per_pass};

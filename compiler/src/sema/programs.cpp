@@ -12,6 +12,26 @@ namespace {
 
 constexpr std::string_view kTargets[] = {"2.0", "2.5", "3.0", "3.5", "4.0", "4.5", "4.6", "5.0"};
 
+// Every pragma Unity's shader compiler (2017-2019 and later) or facet reads,
+// and HLSL's own; anything else is most likely a typo ("fragmnet").
+constexpr std::string_view kKnownPragmas[] = {
+    "vertex", "fragment", "geometry", "hull", "domain", "target", "require", "surface",
+    "only_renderers", "exclude_renderers", "instancing_options", "multi_compile", "shader_feature",
+    "dynamic_branch", "skip_variants", "keyword_rule", "hardware_tier_variants", "enable_d3d11_debug_symbols",
+    "glsl_no_auto_normalization", "glsl", "glsl_es2", "editor_sync_compilation", "enable_cbuffer",
+    "prefer_hlslcc", "use_dxc", "never_use_dxc", "skip_optimizations", "disable_fastmath", "debug",
+    "fragmentoption", "profileoption", "multi_compile_local", "pack_matrix", "warning", "def", "message",
+    "once", "optimize", "unroll", "loop", "lod_fade", "enable_d3d11_debug"};
+
+bool is_known_pragma(std::string_view name) {
+  // Keyword pragmas: every multi_compile*/shader_feature*/dynamic_branch*
+  // spelling is checked by facet::variants, which names the bad ones.
+  for (std::string_view prefix : {"multi_compile", "shader_feature", "dynamic_branch"}) {
+    if (name.starts_with(prefix)) return true;
+  }
+  return std::find(std::begin(kKnownPragmas), std::end(kKnownPragmas), name) != std::end(kKnownPragmas);
+}
+
 ir::ProgramLanguage language(ast::ProgramLanguage l) {
   switch (l) {
     case ast::ProgramLanguage::hlsl: return ir::ProgramLanguage::hlsl;
@@ -49,7 +69,23 @@ class ProgramLowering {
     if (auto stage = stage_of(p.name)) entry_point(*stage, p);
     else if (p.name == "target") target(p);
     else if (p.name == "surface") surface(p);
+    else if (!is_known_pragma(p.name)) unknown(p);
     program_.pragmas.push_back(std::move(p));
+  }
+
+  // A vertex function needs a fragment function and the other way round, as
+  // Unity requires; a surface program gets both from its lowering.
+  void check_stages(const ast::ProgramBlock& block) {
+    if (program_.language == ir::ProgramLanguage::glsl || !program_.surface_function.empty()) return;
+    bool vertex = program_.has_stage(Stage::vertex), fragment = program_.has_stage(Stage::fragment);
+    if (vertex == fragment) return;
+    Stage missing = vertex ? Stage::fragment : Stage::vertex;
+    Stage present = vertex ? Stage::vertex : Stage::fragment;
+    ctx_.error(DiagId::sema_missing_stage, block.keyword_span,
+               "this program has a " + std::string(stage_name(present)) + " function but no " +
+                   std::string(stage_name(missing)) + " function")
+        .note(entry_spans_[size_t(present)], "add '#pragma " + std::string(stage_name(missing)) +
+                                                 " <function>' next to this one");
   }
 
   // Unity raises the target for the stages that need it.
@@ -99,6 +135,11 @@ class ProgramLowering {
     }
     ctx_.error(DiagId::sema_bad_shader_target, p.span, "invalid shader target '" + p.args[0] + "'")
         .note({}, "valid targets are " + join(kTargets));
+  }
+
+  void unknown(const ir::Pragma& p) {
+    Diagnostic& d = ctx_.report(DiagId::sema_unknown_pragma, p.span, "unknown pragma '" + p.name + "' is ignored");
+    if (auto best = suggest(p.name, kKnownPragmas)) d.note(p.span, "did you mean '" + std::string(*best) + "'?");
   }
 
   void surface(const ir::Pragma& p) {
@@ -179,6 +220,7 @@ ir::Program lower_program(const ast::ProgramBlock& block, const std::vector<cons
   }
   if (program.language == ir::ProgramLanguage::glsl) find_glsl_stages(program, all);
   lowering.finish();
+  lowering.check_stages(block);
   return program;
 }
 

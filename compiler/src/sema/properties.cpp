@@ -131,7 +131,10 @@ std::vector<ir::Property> lower_properties(const std::vector<ast::Property>& pro
   for (const ast::Property& p : properties) {
     auto [first, inserted] = seen.emplace(p.name, &p);
     if (!inserted) {
-      ctx.error(DiagId::sema_duplicate_property, p.name_span, "property '" + p.name + "' is declared twice")
+      // Unity lists both, and its lookups by name find the first; facet
+      // keeps the first.
+      ctx.report(DiagId::sema_duplicate_property, p.name_span,
+                 "property '" + p.name + "' is declared twice; the first declaration is used")
           .note(first->second->name_span, "'" + p.name + "' was first declared here");
       continue;
     }

@@ -3,6 +3,7 @@
 // inward: Category -> SubShader -> Pass, the inner scope winning.
 #include "facet/sema.h"
 
+#include "sema/fixed_function.h"
 #include "sema/lower.h"
 
 namespace facet::sema {
@@ -13,6 +14,7 @@ struct Scope {
   ir::RenderState state;
   std::vector<ir::Tag> tags;
   std::vector<const ast::ProgramBlock*> includes;  // Shader scope first
+  std::optional<int> lod;                          // the innermost Category's LOD
 };
 
 std::vector<const ast::ProgramBlock*> with_includes(std::vector<const ast::ProgramBlock*> outer,
@@ -32,6 +34,7 @@ std::vector<Scope> lower_categories(const ast::Shader& shader, const Scope& root
     out[i].state = merge_state(base.state, lower_state(c.state, ctx));
     out[i].tags = inherit_tags(base.tags, lower_tags(c.tags));
     out[i].includes = with_includes(base.includes, c.includes);
+    out[i].lod = c.lod ? c.lod : base.lod;
   }
   return out;
 }
@@ -112,7 +115,7 @@ ir::SubShader lower_subshader(const ast::SubShader& sub, const Scope& scope, Con
   ir::SubShader out;
   check_tags(sub.tags, ctx);
   out.tags = inherit_tags(scope.tags, lower_tags(sub.tags));
-  out.lod = sub.lod.value_or(0);
+  out.lod = sub.lod.value_or(scope.lod.value_or(0));
   out.state = merge_state(scope.state, lower_state(sub.state, ctx));
   out.span = sub.span;
   auto includes = with_includes(scope.includes, sub.includes);
@@ -140,6 +143,7 @@ Result<ir::Shader> analyze(const ast::Shader& shader, const SourceMap& sources, 
   for (const ast::SubShader& sub : shader.subshaders) {
     bool in_category = sub.category >= 0 && size_t(sub.category) < categories.size();
     out.subshaders.push_back(lower_subshader(sub, in_category ? categories[size_t(sub.category)] : root, ctx));
+    lower_fixed_function_passes(shader, sub, out.subshaders.size() - 1, out.subshaders.back(), ctx);
   }
   if (ctx.errors > 0) return failure(std::to_string(ctx.errors) + " error(s) in '" + shader.name + "'");
   return out;

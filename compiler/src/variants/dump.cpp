@@ -48,26 +48,49 @@ void dump_sets(const KeywordSpace& space, std::string& out) {
   }
   out += "dynamic_branch: " + joined_or_none(space.dynamic_branch_keywords) + "\n";
   out += "skip_variants: " + joined_or_none(space.skip_variants) + "\n";
+  for (const KeywordCombinations& group : space.combinations) {
+    out += "combinations: " + group.pragma + " lists " + std::to_string(group.choices.size()) +
+           " combinations of sets #" + std::to_string(group.sets.front()) + "-#" + std::to_string(group.sets.back()) +
+           " (Unity's list)\n";
+  }
+  if (!space.unreachable_keywords.empty()) {
+    out += "unreachable: " + joined_or_none(space.unreachable_keywords) +
+           " (facet's renderer never enables them; built only with --build-unreachable)\n";
+  }
+}
+
+bool is_unreachable(const KeywordSpace& space, const std::vector<std::string>& keywords) {
+  for (const std::string& k : keywords) {
+    if (std::find(space.unreachable_keywords.begin(), space.unreachable_keywords.end(), k) !=
+        space.unreachable_keywords.end()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 void dump_counts(const KeywordSpace& space, const DumpOptions& options, std::string& out) {
   struct Row {
-    std::string name, full, after_skip;
+    std::string name, full, after_skip, reachable;
   };
   std::vector<Row> rows;
   VariantCounts pass = count_variants(space);
-  rows.push_back({"pass", pass.full.to_string(), pass.after_skip.to_string()});
+  rows.push_back({"pass", pass.full.to_string(), pass.after_skip.to_string(), pass.reachable.to_string()});
   for (int s = 0; s < kStageCount; ++s) {
     if (!(options.stages & stage_bit(Stage(s)))) continue;
     VariantCounts stage = count_variants(space, {.stage = Stage(s)});
-    rows.push_back({std::string(stage_name(Stage(s))), stage.full.to_string(), stage.after_skip.to_string()});
+    rows.push_back({std::string(stage_name(Stage(s))), stage.full.to_string(), stage.after_skip.to_string(),
+                    stage.reachable.to_string()});
   }
   size_t full_width = 4;  // "full"
   for (const Row& row : rows) full_width = std::max(full_width, row.full.size());
+  bool reachable = !space.unreachable_keywords.empty();
   out += "variant counts:\n";
-  out += "  " + padded("", 10) + padded("full", full_width, true) + "  after skip_variants\n";
+  out += "  " + padded("", 10) + padded("full", full_width, true) + "  after skip_variants" +
+         (reachable ? "  reachable" : "") + "\n";
   for (const Row& row : rows) {
-    out += "  " + padded(row.name, 10) + padded(row.full, full_width, true) + "  " + row.after_skip + "\n";
+    out += "  " + padded(row.name, 10) + padded(row.full, full_width, true) + "  " +
+           (reachable ? padded(row.after_skip, 19) + "  " + row.reachable : row.after_skip) + "\n";
   }
 }
 
@@ -85,7 +108,8 @@ void dump_variants(const KeywordSpace& space, const DumpOptions& options, std::s
   for (size_t i = 0; i < keys->size(); ++i) {
     std::vector<std::string> keywords = all_keywords(space, (*keys)[i]);
     out += "  " + padded(std::to_string(i), width, true) + "  " +
-           (keywords.empty() ? std::string("(no keywords)") : joined_or_none(keywords)) + "\n";
+           (keywords.empty() ? std::string("(no keywords)") : joined_or_none(keywords)) +
+           (is_unreachable(space, keywords) ? "  [unreachable]" : "") + "\n";
   }
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <string_view>
 #include <utility>
 
@@ -141,6 +142,8 @@ class SpaceBuilder {
 
   void add_keyword_pragma(const ir::Pragma& pragma, const DirectiveForm& form);
   void add_shortcut(const ir::Pragma& pragma);
+  void add_combinations(const ir::Pragma& pragma, const std::vector<size_t>& sets,
+                        const std::vector<std::vector<std::string>>& combinations);
   void add_skip_variants(const ir::Pragma& pragma);
   void add_keyword_rule(const ir::Pragma& pragma);
   void report_unknown_directive(const ir::Pragma& pragma);
@@ -219,8 +222,8 @@ void SpaceBuilder::add_keyword_pragma(const ir::Pragma& pragma, const DirectiveF
 }
 
 void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
-  auto sets = expand_shortcut(pragma.name);
-  if (!sets) {
+  auto shortcut = expand_shortcut(pragma.name);
+  if (!shortcut) {
     Diagnostic& d = diags_.add(DiagId::pragma_unknown_shortcut, pragma.span,
                                "unknown keyword shortcut '" + pragma.name + "'; the known shortcuts are " +
                                    join(known_shortcuts(), ", "));
@@ -239,16 +242,66 @@ void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
                "unknown modifier '" + std::string(arg) + "' for '" + pragma.name +
                    "' is ignored; known modifiers are " + join(known_modifiers(), ", "));
   }
-  for (std::vector<std::string>& keywords : *sets) {
-    std::erase_if(keywords, [&](const std::string& k) {
-      return std::find(removed.begin(), removed.end(), k) != removed.end();
-    });
-    // A set that a modifier emptied (or left with only "_") adds no variants.
-    bool any = std::any_of(keywords.begin(), keywords.end(), [](const std::string& k) { return !k.empty(); });
-    if (!any) continue;
-    add_set(KeywordSet{KeywordDirective::multi_compile, false, kAllStages, std::move(keywords), pragma.name,
-                       pragma.span});
+  auto is_removed = [&](const std::string& k) { return std::find(removed.begin(), removed.end(), k) != removed.end(); };
+  bool curated = !shortcut->combinations.empty();
+  if (curated) {
+    // Unity's rule: a modifier removes the combinations that hold its
+    // keywords; keywords left in no combination leave their sets.
+    std::erase_if(shortcut->combinations,
+                  [&](const std::vector<std::string>& c) { return std::any_of(c.begin(), c.end(), is_removed); });
+    std::set<std::string> used;
+    for (const auto& combination : shortcut->combinations) used.insert(combination.begin(), combination.end());
+    for (ShortcutSet& set : shortcut->sets) {
+      std::erase_if(set.keywords, [&](const std::string& k) { return !k.empty() && !used.count(k); });
+    }
+  } else {
+    for (ShortcutSet& set : shortcut->sets) std::erase_if(set.keywords, is_removed);
   }
+  std::vector<size_t> added;
+  for (ShortcutSet& set : shortcut->sets) {
+    // A set that a modifier emptied (or left with only "_") adds no variants.
+    bool any = std::any_of(set.keywords.begin(), set.keywords.end(), [](const std::string& k) { return !k.empty(); });
+    if (!any) continue;
+    size_t before = space_.sets.size();
+    add_set(KeywordSet{KeywordDirective::multi_compile, false, set.stages, std::move(set.keywords), pragma.name,
+                       pragma.span});
+    if (space_.sets.size() > before) added.push_back(before);
+  }
+  for (size_t s : added) {
+    for (const std::string& k : space_.sets[s].keywords) {
+      bool unreachable = std::find(shortcut->unreachable.begin(), shortcut->unreachable.end(), k) !=
+                         shortcut->unreachable.end();
+      if (unreachable) space_.unreachable_keywords.push_back(k);
+    }
+  }
+  if (curated) add_combinations(pragma, added, shortcut->combinations);
+}
+
+// The listed combinations of a curated shortcut over the sets it added, as
+// choices; a shortcut whose combinations cover every product adds nothing.
+void SpaceBuilder::add_combinations(const ir::Pragma& pragma, const std::vector<size_t>& sets,
+                                    const std::vector<std::vector<std::string>>& combinations) {
+  if (sets.empty()) return;
+  KeywordCombinations group{sets, {}, pragma.name, pragma.span};
+  std::set<std::vector<uint32_t>> choices;
+  for (const std::vector<std::string>& combination : combinations) {
+    std::vector<uint32_t> row;
+    for (size_t s : sets) {
+      const std::vector<std::string>& keywords = space_.sets[s].keywords;
+      auto hit = std::find_if(keywords.begin(), keywords.end(), [&](const std::string& k) {
+        return !k.empty() && std::find(combination.begin(), combination.end(), k) != combination.end();
+      });
+      if (hit == keywords.end()) hit = std::find(keywords.begin(), keywords.end(), std::string());
+      if (hit == keywords.end()) break;  // the set has no off state and the combination none of its keywords
+      row.push_back(uint32_t(hit - keywords.begin()));
+    }
+    if (row.size() == sets.size()) choices.insert(std::move(row));
+  }
+  uint64_t product = 1;
+  for (size_t s : sets) product *= space_.sets[s].keywords.size();
+  if (choices.size() == product) return;
+  group.choices.assign(choices.begin(), choices.end());
+  space_.combinations.push_back(std::move(group));
 }
 
 void SpaceBuilder::add_skip_variants(const ir::Pragma& pragma) {

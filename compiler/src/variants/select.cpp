@@ -83,7 +83,8 @@ std::optional<size_t> requested_key(const KeywordSpace& space, const AllowedStat
   return conflict;
 }
 
-bool is_available(const VariantKey& key, const AllowedStates& allowed, const SelectOptions& options) {
+bool is_available(const KeywordSpace& space, const VariantKey& key, const AllowedStates& allowed,
+                  const SelectOptions& options) {
   if (options.available) {
     const auto& list = *options.available;
     return std::find(list.begin(), list.end(), key) != list.end();
@@ -91,7 +92,7 @@ bool is_available(const VariantKey& key, const AllowedStates& allowed, const Sel
   for (size_t s = 0; s < allowed.size(); ++s) {
     if (!std::binary_search(allowed[s].begin(), allowed[s].end(), key.choice[s])) return false;
   }
-  return true;
+  return in_combinations(space, key, allowed);
 }
 
 // Closest match over the whole space after skip_variants, the same answer
@@ -104,6 +105,25 @@ VariantKey closest_in_space(const KeywordSpace& space, const AllowedStates& allo
     auto hit = std::find_if(allowed[s].begin(), allowed[s].end(),
                             [&](uint32_t choice) { return enabled_at(space.sets[s], choice, enabled); });
     key.choice.push_back(hit != allowed[s].end() ? *hit : allowed[s].front());
+  }
+  // A curated shortcut's sets take its best listed combination together:
+  // the most enabled keywords, ties to the smallest (combinations are sorted).
+  for (const KeywordCombinations& group : space.combinations) {
+    std::set<std::vector<uint32_t>> combinations = view_combinations(group, allowed);
+    const std::vector<uint32_t>* best = nullptr;
+    size_t best_score = 0;
+    for (const std::vector<uint32_t>& combination : combinations) {
+      size_t score = 0;
+      for (size_t i = 0; i < combination.size(); ++i) {
+        score += enabled_at(space.sets[group.sets[i]], combination[i], enabled) ? 1 : 0;
+      }
+      if (!best || score > best_score) {
+        best = &combination;
+        best_score = score;
+      }
+    }
+    if (!best) continue;
+    for (size_t i = 0; i < best->size(); ++i) key.choice[group.sets[i]] = (*best)[i];
   }
   return key;
 }
@@ -172,7 +192,7 @@ Result<Selection> select_variant(const KeywordSpace& space, const KeywordList& m
   enabled.add(apply_implications(space, material_keywords), apply_implications(space, global_keywords));
   AllowedStates allowed = allowed_states(space, std::nullopt, true);
   std::optional<size_t> conflict = requested_key(space, allowed, enabled, selection.key);
-  selection.exact = !conflict && is_available(selection.key, allowed, options);
+  selection.exact = !conflict && is_available(space, selection.key, allowed, options);
   if (selection.exact) return selection;
   if (options.strict) {
     report_no_exact_match(space, selection.key, conflict, enabled, diags);

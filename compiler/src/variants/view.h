@@ -15,7 +15,19 @@ namespace facet::variants {
 // or whose keywords are all skipped, has exactly {kOffChoice}.
 using AllowedStates = std::vector<std::vector<uint32_t>>;
 
-AllowedStates allowed_states(const KeywordSpace& space, std::optional<Stage> stage, bool apply_skip);
+// `drop_unreachable` also removes the space's unreachable_keywords, as
+// skip_variants removes its keywords.
+AllowedStates allowed_states(const KeywordSpace& space, std::optional<Stage> stage, bool apply_skip,
+                             bool drop_unreachable = false);
+
+// The distinct combinations of one curated shortcut that survive the view:
+// each listed combination with its sets' choices as the view allows them (a
+// set the view left only kOffChoice projects to it), dropped when a choice is
+// not allowed (a skipped keyword).
+std::set<std::vector<uint32_t>> view_combinations(const KeywordCombinations& group, const AllowedStates& allowed);
+
+// Whether `key` is one of the listed combinations of every curated shortcut.
+bool in_combinations(const KeywordSpace& space, const VariantKey& key, const AllowedStates& allowed);
 
 // The choice of a set in which nothing is enabled: its "" (no keyword) state
 // when it has one the view allows, which is an exact match for "nothing
@@ -41,7 +53,8 @@ MaterialCombos material_combos(const KeywordSpace& space, const AllowedStates& a
 
 // The number of variants of the view: the product of the allowed state
 // counts, with the sets of `combos` (when given) counted together as
-// combos->combos.size().
-BigCount view_count(const AllowedStates& allowed, const MaterialCombos* combos);
+// combos->combos.size(), and the sets of each curated shortcut together as
+// its view_combinations().
+BigCount view_count(const KeywordSpace& space, const AllowedStates& allowed, const MaterialCombos* combos);
 
 }  // namespace facet::variants

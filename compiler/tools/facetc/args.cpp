@@ -23,6 +23,7 @@ struct RawArgs {
   std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
   bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
+  bool build_unreachable = false;
   bool depfile_only = false, write_depfile = false, stats = false, version = false;
   uint64_t max_variants = 65536;
   unsigned jobs = 0;
@@ -31,6 +32,8 @@ struct RawArgs {
   std::string emit_jobs, program;
   bool no_cache = false;
   std::string unity_version;
+  bool check = false;
+  std::string junit, sarif;
 };
 
 // Repeatable options take one value per occurrence (allow_extra_args(false)),
@@ -69,6 +72,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"")->allow_extra_args(false);
   app.add_flag("--all-variants", raw.all_variants, "every variant (the default for packages)");
   app.add_flag("--strict-variants", raw.strict_variants, "a keyword set without its exact variant is an error");
+  app.add_flag("--build-unreachable", raw.build_unreachable,
+               "also build variants of shortcut keywords facet's renderer never enables (lightmaps, ...)");
   app.add_option("--max-variants", raw.max_variants, "refuse passes with more variants (0: no limit)");
   app.add_flag("-w", raw.no_warnings, "suppress every warning");
   app.add_flag("--Werror", raw.werror, "treat warnings as errors (also -Werror)");
@@ -92,6 +97,10 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--remote-cache", raw.cache_url,
                  "a shared cache server, bazel-remote HTTP layout (default: $FACET_REMOTE_CACHE)");
   app.add_flag("--no-cache", raw.no_cache, "neither read nor write the compile cache");
+  app.add_flag("--check", raw.check, "compile every .shader of the files and folders given, one line each; "
+                                      "write no package (a CI linter)");
+  app.add_option("--junit", raw.junit, "with --check: write a JUnit XML report to FILE");
+  app.add_option("--sarif", raw.sarif, "with --check: write a SARIF 2.1.0 report to FILE");
   app.add_flag("--stats", raw.stats, "print passes, variants and SPIR-V counts per input");
   app.add_flag("--version", raw.version, "print the version and exit");
 }
@@ -158,7 +167,7 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
       {!raw.dump.empty(), Mode::dump},          {raw.depfile_only, Mode::depfile_only},
       {!raw.report.empty(), Mode::report},     {raw.merge, Mode::merge},
       {raw.estimate, Mode::estimate},          {!raw.emit_jobs.empty(), Mode::emit_jobs},
-      {!raw.program.empty(), Mode::program}};
+      {!raw.program.empty(), Mode::program},   {raw.check, Mode::check}};
   int chosen = 0;
   for (auto [on, mode] : modes) {
     if (on) {
@@ -167,7 +176,8 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
     }
   }
   if (chosen > 1) {
-    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge, --estimate, --emit-jobs, --program and -M exclude each other";
+    return "-E, -S/--emit, --reflect, --list-variants, --dump, --report, --merge, --estimate, --emit-jobs, --program, "
+           "--check and -M exclude each other";
   }
   args.report = raw.report == "json" ? ReportFormat::json : raw.report == "html" ? ReportFormat::html
                                                                                    : ReportFormat::text;
@@ -184,15 +194,23 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
 std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
   if (args.inputs.empty()) return "no input files";
   if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report &&
-      args.mode != Mode::merge) {
+      args.mode != Mode::merge && args.mode != Mode::check) {
     return "-o names one output file; give one input (or --out-dir for the packages of several)";
   }
   if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
   bool strips = args.mode == Mode::package || args.mode == Mode::report || args.mode == Mode::depfile_only ||
+                args.mode == Mode::check ||
                 (args.mode == Mode::dump && args.dump == DumpKind::package);
   if ((!raw.material_files.empty() || !raw.strip_files.empty()) && !strips) {
-    return "--materials and --strip apply to packages and --report";
+    return "--materials and --strip apply to packages, --report and --check";
   }
+  if ((!raw.junit.empty() || !raw.sarif.empty()) && args.mode != Mode::check) {
+    return "--junit and --sarif go with --check";
+  }
+  if (args.mode == Mode::check && !args.output.empty()) {
+    return "--check writes no output; name its reports with --junit and --sarif";
+  }
+  if (!raw.junit.empty() && raw.junit == raw.sarif) return "--junit and --sarif name the same file";
   if (args.mode == Mode::report && (raw.write_depfile || args.keywords)) {
     return "--report covers every variant; -MD and --keywords do not apply";
   }
@@ -233,6 +251,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.passes = raw.passes;
   args.all_variants = raw.all_variants;
   args.strict_variants = raw.strict_variants;
+  args.build_unreachable = raw.build_unreachable;
   args.max_variants = raw.max_variants;
   args.stats = raw.stats;
   args.material_files = raw.material_files;
@@ -241,6 +260,8 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.program = raw.program;
   args.compile_flags = compile_flags(raw);
   args.jobs = raw.jobs;
+  args.junit_file = raw.junit;
+  args.sarif_file = raw.sarif;
   if (!raw.no_cache) {
     const char* env = std::getenv("FACET_CACHE_DIR");
     args.cache_dir = !raw.cache_dir.empty() ? raw.cache_dir : env ? env : "";

@@ -25,6 +25,7 @@ enum class Mode {
   estimate,       // --estimate: what a build would take, from a timed sample
   emit_jobs,      // --emit-jobs=ninja|json: one build-farm job per distinct program, and the package job
   program,        // --program PASS:STAGE:KEYWORDS: one farm job, compiled into the cache
+  check,          // --check: compile every shader of files and folders, a line each; no package (a CI linter)
 };
 
 enum class JobsFormat { ninja, json };
@@ -52,6 +53,7 @@ struct FacetcArgs {
   std::optional<std::vector<std::string>> keywords;  // --keywords "A B"
   bool all_variants = false;
   bool strict_variants = false;
+  bool build_unreachable = false;  // --build-unreachable
   uint64_t max_variants = 65536;
   backend::BackendOptions backend;   // -D -I -O -g --target-env --stdlib-dir
   WarningOptions warnings;           // -w -Werror -Wno-<group>
@@ -70,6 +72,8 @@ struct FacetcArgs {
   std::string facetc_path = "facetc";          // how jobs call facetc: this program's own path
   std::string cache_dir;  // --cache-dir, else $FACET_CACHE_DIR; "" (or --no-cache): none
   std::string cache_url;  // --remote-cache, else $FACET_REMOTE_CACHE; "" (or --no-cache): none
+  std::string junit_file;  // --check --junit FILE: JUnit XML of the check
+  std::string sarif_file;  // --check --sarif FILE: SARIF 2.1.0 of every diagnostic
 };
 
 // What parse_args decided: run with these arguments, or print `text` and

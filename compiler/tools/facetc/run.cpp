@@ -15,6 +15,7 @@
 #include "facet/package.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "check_mode.h"
 #include "jobs.h"
 #include "progress.h"
 #include "report_mode.h"
@@ -159,6 +160,7 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
     }
     case Mode::report:  // run_report handles it
     case Mode::merge:   // run_merge handles it
+    case Mode::check:   // run_check handles it
       return failure("not a per-input mode");
     case Mode::emit_jobs: {
       auto text = emit_jobs(args, compiler, *shader, input, args.facetc_path, sources, diags);
@@ -322,6 +324,11 @@ int run_facetc(const FacetcArgs& args, Console& console) {
   }
   if (args.mode == Mode::merge) {
     exit_code = run_merge(args, console, json_diagnostics);
+    if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
+    return exit_code;
+  }
+  if (args.mode == Mode::check) {
+    exit_code = run_check(args, compiler, *strip, console, json_diagnostics);
     if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
     return exit_code;
   }

@@ -117,7 +117,7 @@ std::string text_document(const FacetcArgs& args, const std::vector<Unit>& units
 
 CompileOptions compile_options(const FacetcArgs& args, bool one_variant_by_default) {
   CompileOptions options{.backend = args.backend, .passes = args.passes, .strict_selection = args.strict_variants,
-                         .max_variants_per_pass = args.max_variants,
+                         .max_variants_per_pass = args.max_variants, .build_unreachable = args.build_unreachable,
                          .jobs = args.jobs, .cache_dir = args.cache_dir,
                          .cache_url = args.cache_url};
   options.shard_index = args.shard_index;

@@ -567,7 +567,7 @@ TEST_F(PackageReaderTest, BadEnumValue) {
   bytes_[type] = 200;
   reseal(bytes_);
   EXPECT_EQ(read_error(bytes_),
-            "corrupt package: invalid property type 200 (at most 10) at byte offset " + std::to_string(type));
+            "corrupt package: invalid property type 200 (at most 11) at byte offset " + std::to_string(type));
 }
 
 TEST_F(PackageReaderTest, BadBoolean) {

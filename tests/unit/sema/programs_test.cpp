@@ -110,6 +110,50 @@ TEST(SemaProgramsTest, EntryPointsAndPragmaSpans) {
   EXPECT_EQ(p.body.first_line, 2u);
 }
 
+TEST(SemaProgramsTest, UnknownPragmaWarnsWithTheClosestKnownOne) {
+  auto a = analyze_text(cg_pass("#pragma vertex vert\n#pragma fragmnet frag\n#pragma fragment frag"));
+  ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
+  const Diagnostic* d = a->find(DiagId::sema_unknown_pragma);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::warning);
+  EXPECT_EQ(d->message, "unknown pragma 'fragmnet' is ignored");
+  EXPECT_EQ(a->at(d->span).line, 4u);
+  EXPECT_EQ(a->at(d->span).column, 1u);
+  ASSERT_EQ(d->notes.size(), 1u);
+  EXPECT_EQ(d->notes[0].message, "did you mean 'fragment'?");
+}
+
+TEST(SemaProgramsTest, UnitysOtherPragmasAreNotWarnedAbout) {
+  auto a = analyze_text(cg_pass("#pragma vertex v\n#pragma fragment f\n#pragma fragmentoption ARB_precision_hint_fastest\n"
+                                "#pragma only_renderers d3d11 vulkan\n#pragma enable_d3d11_debug_symbols\n"
+                                "#pragma multi_compile_fog\n#pragma warning (disable : 3205)"));
+  ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
+  EXPECT_EQ(a->find(DiagId::sema_unknown_pragma), nullptr);
+}
+
+// A typo in '#pragma fragment' leaves a vertex-only program: a located
+// error at the program, never a pass that fails later in the renderer.
+TEST(SemaProgramsTest, AVertexFunctionWithoutAFragmentFunctionIsAnError) {
+  auto a = analyze_text(cg_pass("#pragma vertex vert\n#pragma fragmnet frag"));
+  EXPECT_FALSE(a->ir);
+  const Diagnostic* d = a->find(DiagId::sema_missing_stage);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->message, "this program has a vertex function but no fragment function");
+  EXPECT_EQ(a->at(d->span).line, 2u);
+  EXPECT_EQ(a->at(d->span).column, 1u);
+  ASSERT_EQ(d->notes.size(), 1u);
+  EXPECT_EQ(a->at(d->notes[0].span).line, 3u);
+  EXPECT_EQ(d->notes[0].message, "add '#pragma fragment <function>' next to this one");
+}
+
+TEST(SemaProgramsTest, AFragmentFunctionWithoutAVertexFunctionIsAnError) {
+  auto a = analyze_text(cg_pass("#pragma fragment frag"));
+  EXPECT_FALSE(a->ir);
+  const Diagnostic* d = a->find(DiagId::sema_missing_stage);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->message, "this program has a fragment function but no vertex function");
+}
+
 struct TargetCase {
   const char* pragmas;
   int target;
@@ -150,7 +194,7 @@ TEST(SemaProgramsTest, BadTargetListsValidOnes) {
 }
 
 TEST(SemaProgramsTest, ConflictingEntryPointIsAnError) {
-  auto a = analyze_text(cg_pass("#pragma vertex a\n#pragma vertex a\n#pragma vertex b"));
+  auto a = analyze_text(cg_pass("#pragma vertex a\n#pragma vertex a\n#pragma vertex b\n#pragma fragment f"));
   EXPECT_FALSE(a->ir);
   const Diagnostic* d = a->find(DiagId::sema_duplicate_entry_point);
   ASSERT_NE(d, nullptr);

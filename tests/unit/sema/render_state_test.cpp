@@ -71,6 +71,13 @@ INSTANTIATE_TEST_SUITE_P(
         CanonicalCase{"zwrite", "zwrite on", R"({"ZWrite":"On"})"},
         CanonicalCase{"alpha_to_mask", "AlphaToMask off", R"({"AlphaToMask":"Off"})"},
         CanonicalCase{"zclip", "ZClip false", R"({"ZClip":"False"})"},
+        // Unity accepts either pair of words for every boolean command.
+        CanonicalCase{"zclip_on", "ZClip On", R"({"ZClip":"True"})"},
+        CanonicalCase{"zwrite_true", "ZWrite True", R"({"ZWrite":"On"})"},
+        CanonicalCase{"alpha_to_mask_true", "AlphaToMask True", R"({"AlphaToMask":"On"})"},
+        CanonicalCase{"conservative_off", "Conservative Off", R"({"Conservative":"False"})"},
+        // "ZTest Off" is Unity's alias of Always.
+        CanonicalCase{"ztest_off", "ZTest Off", R"({"ZTest":"Always"})"},
         CanonicalCase{"conservative", "Conservative TRUE", R"({"Conservative":"True"})"},
         CanonicalCase{"offset", "Offset -1, -1", R"({"Offset":["-1","-1"]})"},
         CanonicalCase{"offset_prop", "Offset [_F], 0.5", R"({"Offset":["[_F]","0.5"]})"},
@@ -151,8 +158,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "unknown value 'Always' for 'Stencil PassBack'", "Keep, Zero, Replace"},
         ErrorCase{"offset_word", "Offset Off, 1", DiagId::sema_unknown_state_value, 8,
                   "'Offset' expects a number or '[_Prop]', not 'Off'", ""},
-        ErrorCase{"zclip_on", "ZClip On", DiagId::sema_unknown_state_value, 7, "unknown value 'On' for 'ZClip'",
-                  "True, False"}),
+        ErrorCase{"zclip_word", "ZClip Yes", DiagId::sema_unknown_state_value, 7, "unknown value 'Yes' for 'ZClip'",
+                  "On, Off, True, False"}),
     [](const testing::TestParamInfo<ErrorCase>& info) { return std::string(info.param.name); });
 
 TEST(SemaRenderStateTest, SuggestionCarriesAFix) {

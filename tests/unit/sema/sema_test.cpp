@@ -116,15 +116,19 @@ TEST(SemaPropertiesTest, UnrelatedTypeListsValidTypes) {
   const Diagnostic* d = a->find(DiagId::sema_unknown_property_type);
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->notes.at(0).message,
-            "valid types are Float, Int, Integer, Range, Color, Vector, 2D, 3D, Cube, 2DArray, CubeArray");
+            "valid types are Float, Int, Integer, Range, Color, Vector, 2D, 3D, Cube, 2DArray, CubeArray, Any");
 }
 
-TEST(SemaPropertiesTest, DuplicateNamePointsAtTheFirst) {
+TEST(SemaPropertiesTest, DuplicateNameWarnsKeepsTheFirstAndPointsAtIt) {
   auto a = analyze_text(with_properties("_A (\"a\", Float) = 1\n_B (\"b\", Float) = 1\n  _A (\"c\", Color) = (1,1,1)"));
-  EXPECT_FALSE(a->ir);
+  ASSERT_TRUE(a->ir);
+  ASSERT_EQ(a->ir->properties.size(), 2u);
+  EXPECT_EQ(a->ir->properties[0].type, ir::PropertyType::float_);
+  EXPECT_EQ(a->ir->properties[0].display_name, "a");
   const Diagnostic* d = a->find(DiagId::sema_duplicate_property);
   ASSERT_NE(d, nullptr);
-  EXPECT_EQ(d->message, "property '_A' is declared twice");
+  EXPECT_EQ(d->severity, Severity::warning);
+  EXPECT_EQ(d->message, "property '_A' is declared twice; the first declaration is used");
   EXPECT_EQ(a->at(d->span).line, 5u);
   EXPECT_EQ(a->at(d->span).column, 3u);
   ASSERT_EQ(d->notes.size(), 1u);

@@ -143,7 +143,13 @@ INSTANTIATE_TEST_SUITE_P(
         AttributeCase{"header", "[Header(Surface: options, more)]", "Header", true, {"Surface: options", "more"}},
         AttributeCase{"space_empty", "[Space()]", "Space", true, {}},
         AttributeCase{"spaced", "[ Space ( 20 ) ]", "Space", true, {"20"}},
-        AttributeCase{"unknown_kept", "[MyDrawer(x, (a, b))]", "MyDrawer", true, {"x", "(a, b)"}}),
+        AttributeCase{"unknown_kept", "[MyDrawer(x, (a, b))]", "MyDrawer", true, {"x", "(a, b)"}},
+        AttributeCase{"leading_digits", "[KeywordEnum(6 Frames Layout, 8 Frames)]", "KeywordEnum", true,
+                      {"6 Frames Layout", "8 Frames"}},
+        AttributeCase{"nested_parens_unquoted", "[Header(Mask (R) and (G), done)]", "Header", true,
+                      {"Mask (R) and (G)", "done"}},
+        AttributeCase{"quoted_across_lines", "[MyDrawer(\"first\nsecond\", 2)]", "MyDrawer", true,
+                      {"\"first\nsecond\"", "2"}}),
     [](const testing::TestParamInfo<AttributeCase>& info) { return std::string(info.param.name); });
 
 // --- Render state -----------------------------------------------------------------

@@ -15,16 +15,16 @@ using pragma_lines::Lines;
 using pragma_lines::program_of;
 using pragma_lines::space_of;
 
-const Lines kForward = {"multi_compile_fwdbase", "multi_compile_fog", "shader_feature_local_fragment _NORMALMAP",
+const Lines kForward = {"multi_compile DIRECTIONAL", "multi_compile _ LIGHTPROBE_SH", "multi_compile _ SHADOWS_SCREEN", "multi_compile_fog", "shader_feature_local_fragment _NORMALMAP",
                         "dynamic_branch _USE_X", "skip_variants SHADOWS_SCREEN FOG_EXP"};
 
 TEST(VariantsDumpTest, SetsCountsAndVariants) {
   DumpOptions options{.stages = stage_bit(Stage::vertex) | stage_bit(Stage::fragment), .list_variants = true};
   EXPECT_EQ(dump_keyword_space(space_of(kForward), options),
             "keyword sets: 5\n"
-            "  #0  multi_compile_fwdbase          DIRECTIONAL\n"
-            "  #1  multi_compile_fwdbase          _ LIGHTPROBE_SH\n"
-            "  #2  multi_compile_fwdbase          _ SHADOWS_SCREEN\n"
+            "  #0  multi_compile                  DIRECTIONAL\n"
+            "  #1  multi_compile                  _ LIGHTPROBE_SH\n"
+            "  #2  multi_compile                  _ SHADOWS_SCREEN\n"
             "  #3  multi_compile_fog              _ FOG_LINEAR FOG_EXP FOG_EXP2\n"
             "  #4  shader_feature_local_fragment  _ _NORMALMAP\n"
             "dynamic_branch: _USE_X\n"

@@ -131,9 +131,29 @@ TEST_F(VariantsBuildTest, KeywordInASetAndADynamicBranchIsAnError) {
   EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 1u);
 }
 
-TEST_F(VariantsBuildTest, TwoIdenticalShortcutsClash) {
-  build_fails({"multi_compile_fog", "multi_compile_fog"});
-  EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 3u);  // FOG_LINEAR FOG_EXP FOG_EXP2
+// Unity compiles a repeated keyword set once: a surface shader's own
+// '#pragma multi_compile_fog' next to the one its lowering adds.
+TEST_F(VariantsBuildTest, ARepeatedKeywordSetCountsOnceWithANoteAtTheFirst) {
+  Lines lines = {"multi_compile_fog", "multi_compile _ B", "multi_compile_fog"};
+  KeywordSpace space = build(lines);
+  ASSERT_EQ(space.sets.size(), 2u);
+  EXPECT_EQ(space.sets[0].keywords, (Keywords{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}));
+  const Diagnostic& d = first(DiagId::pragma_repeated_keyword_set);
+  EXPECT_EQ(d.severity, Severity::note);
+  EXPECT_EQ(d.span, line_span(lines, 2));
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_EQ(d.notes[0].span, line_span(lines, 0));
+}
+
+TEST_F(VariantsBuildTest, TheSameKeywordsInAnotherOrderAreARepeatToo) {
+  KeywordSpace space = build({"multi_compile _ A B", "multi_compile B _ A"});
+  EXPECT_EQ(space.sets.size(), 1u);
+  EXPECT_EQ(count(DiagId::pragma_repeated_keyword_set), 1u);
+}
+
+TEST_F(VariantsBuildTest, AnOverlappingButDifferentSetStillClashes) {
+  build_fails({"multi_compile_fog", "multi_compile _ FOG_LINEAR"});
+  EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 1u);
 }
 
 struct DirectiveCase {
@@ -194,7 +214,9 @@ TEST_P(VariantsShortcutTest, ExpandsToTheFixedSets) {
     sets.push_back(set.keywords);
     EXPECT_EQ(set.directive, KeywordDirective::multi_compile);
     EXPECT_FALSE(set.local);
-    EXPECT_EQ(set.stages, kAllStages);
+    // Unity's fragment programs never see VERTEXLIGHT_ON.
+    bool vertex_light = set.keywords.back() == "VERTEXLIGHT_ON";
+    EXPECT_EQ(set.stages, vertex_light ? stage_bit(Stage::vertex) : kAllStages);
     EXPECT_EQ(set.pragma, std::string(c.pragma).substr(0, std::string(c.pragma).find(' ')));
   }
   EXPECT_EQ(sets, c.sets);
@@ -202,24 +224,43 @@ TEST_P(VariantsShortcutTest, ExpandsToTheFixedSets) {
 }
 
 const Keywords kLights = {"POINT", "DIRECTIONAL", "SPOT", "POINT_COOKIE", "DIRECTIONAL_COOKIE"};
+const std::vector<Keywords> kFullShadowSets = {kLights,
+                                               {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"},
+                                               {"", "SHADOWS_SOFT"},
+                                               {"", "SHADOWS_SHADOWMASK"},
+                                               {"", "LIGHTMAP_SHADOW_MIXING"}};
 
 INSTANTIATE_TEST_SUITE_P(
     Shortcuts, VariantsShortcutTest,
     ::testing::Values(
-        ShortcutCase{"multi_compile_fwdbase", {{"DIRECTIONAL"}, {"", "LIGHTPROBE_SH"}, {"", "SHADOWS_SCREEN"}}},
+        ShortcutCase{"multi_compile_fwdbase",
+                     {{"DIRECTIONAL"}, {"", "LIGHTMAP_ON"}, {"", "DIRLIGHTMAP_COMBINED"}, {"", "DYNAMICLIGHTMAP_ON"},
+                      {"", "SHADOWS_SCREEN"}, {"", "SHADOWS_SHADOWMASK"}, {"", "LIGHTMAP_SHADOW_MIXING"},
+                      {"", "LIGHTPROBE_SH"}, {"", "VERTEXLIGHT_ON"}}},
         ShortcutCase{"multi_compile_fwdadd", {kLights}},
-        ShortcutCase{"multi_compile_fwdadd_fullshadows",
-                     {kLights, {"", "SHADOWS_DEPTH", "SHADOWS_SCREEN", "SHADOWS_CUBE"}, {"", "SHADOWS_SOFT"}}},
+        ShortcutCase{"multi_compile_fwdadd_fullshadows", kFullShadowSets},
         ShortcutCase{"multi_compile_shadowcaster", {{"SHADOWS_DEPTH", "SHADOWS_CUBE"}}},
+        ShortcutCase{"multi_compile_fwdbasealpha",
+                     {{"DIRECTIONAL"}, {"", "LIGHTMAP_ON"}, {"", "DIRLIGHTMAP_COMBINED"}, {"", "DYNAMICLIGHTMAP_ON"},
+                      {"", "LIGHTMAP_SHADOW_MIXING"}, {"", "LIGHTPROBE_SH"}, {"", "VERTEXLIGHT_ON"}}},
+        ShortcutCase{"multi_compile_lightpass", kFullShadowSets},
+        ShortcutCase{"multi_compile_shadowcollector", {{"", "SHADOWS_SPLIT_SPHERES"}, {"", "SHADOWS_SINGLE_CASCADE"}}},
+        ShortcutCase{"multi_compile_prepassfinal",
+                     {{"", "LIGHTMAP_ON"}, {"", "DIRLIGHTMAP_COMBINED"}, {"", "DYNAMICLIGHTMAP_ON"}, {"", "UNITY_HDR_ON"},
+                      {"", "SHADOWS_SHADOWMASK"}, {"", "LIGHTPROBE_SH"}}},
         ShortcutCase{"multi_compile_fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}}},
         ShortcutCase{"multi_compile_instancing", {{"", "INSTANCING_ON"}}},
         ShortcutCase{"multi_compile_particles", {{"", "SOFTPARTICLES_ON"}}},
-        // Modifiers remove their keywords; an emptied set disappears.
-        ShortcutCase{"multi_compile_fwdbase noshadow", {{"DIRECTIONAL"}, {"", "LIGHTPROBE_SH"}}},
+        // Modifiers remove the listed combinations holding their keywords;
+        // keywords left in none leave their sets, and an emptied set disappears.
+        ShortcutCase{"multi_compile_fwdbase noshadow",
+                     {{"DIRECTIONAL"}, {"", "LIGHTMAP_ON"}, {"", "DIRLIGHTMAP_COMBINED"}, {"", "DYNAMICLIGHTMAP_ON"},
+                      {"", "LIGHTMAP_SHADOW_MIXING"}, {"", "LIGHTPROBE_SH"}, {"", "VERTEXLIGHT_ON"}}},
         ShortcutCase{"multi_compile_fwdadd_fullshadows noshadow", {kLights}},
         ShortcutCase{"multi_compile_shadowcaster noshadow", {}},
-        ShortcutCase{"multi_compile_fwdbase nolightmap nodynlightmap nodirlightmap noshadowmask",
-                     {{"DIRECTIONAL"}, {"", "LIGHTPROBE_SH"}, {"", "SHADOWS_SCREEN"}}}));
+        ShortcutCase{"multi_compile_lightpass noshadow", {kLights}},
+        ShortcutCase{"multi_compile_fwdbase nolightmap nodynlightmap nodirlightmap noshadowmask novertexlight nolppv",
+                     {{"DIRECTIONAL"}, {"", "SHADOWS_SCREEN"}, {"", "LIGHTMAP_SHADOW_MIXING"}, {"", "LIGHTPROBE_SH"}}}));
 
 TEST_F(VariantsBuildTest, UnknownModifierWarnsNamingTheKnownOnes) {
   KeywordSpace space = build({"multi_compile_fog nofoo"});
@@ -228,18 +269,19 @@ TEST_F(VariantsBuildTest, UnknownModifierWarnsNamingTheKnownOnes) {
   EXPECT_EQ(d.severity, Severity::warning);
   EXPECT_EQ(d.message,
             "unknown modifier 'nofoo' for 'multi_compile_fog' is ignored; known modifiers are noshadow, "
-            "nolightmap, nodynlightmap, nodirlightmap, noshadowmask");
+            "nolightmap, nodynlightmap, nodirlightmap, noshadowmask, novertexlight, nolppv");
 }
 
 TEST_F(VariantsBuildTest, UnknownShortcutIsALocatedErrorNamingTheKnownOnes) {
-  Lines lines = {"multi_compile _ A", "multi_compile_fwdbasealpha"};
+  Lines lines = {"multi_compile _ A", "multi_compile_fwdbasealfa"};
   build_fails(lines);
   const Diagnostic& d = first(DiagId::pragma_unknown_shortcut);
   EXPECT_EQ(d.span, line_span(lines, 1));
   EXPECT_EQ(d.message,
-            "unknown keyword shortcut 'multi_compile_fwdbasealpha'; the known shortcuts are multi_compile_fwdbase, "
+            "unknown keyword shortcut 'multi_compile_fwdbasealfa'; the known shortcuts are multi_compile_fwdbase, "
             "multi_compile_fwdadd, multi_compile_fwdadd_fullshadows, multi_compile_shadowcaster, "
-            "multi_compile_fog, multi_compile_instancing, multi_compile_particles");
+            "multi_compile_fwdbasealpha, multi_compile_lightpass, multi_compile_shadowcollector, "
+            "multi_compile_prepassfinal, multi_compile_fog, multi_compile_instancing, multi_compile_particles");
 }
 
 TEST_F(VariantsBuildTest, MisspeltShortcutOrSuffixSuggestsTheClosest) {
@@ -329,8 +371,9 @@ TEST_F(VariantsBuildTest, SkipVariantsOfAnUndeclaredKeywordWarns) {
 TEST_F(VariantsBuildTest, KnownShortcutsAreListedInDocumentedOrder) {
   EXPECT_EQ(known_shortcuts(),
             (Keywords{"multi_compile_fwdbase", "multi_compile_fwdadd", "multi_compile_fwdadd_fullshadows",
-                      "multi_compile_shadowcaster", "multi_compile_fog", "multi_compile_instancing",
-                      "multi_compile_particles"}));
+                      "multi_compile_shadowcaster", "multi_compile_fwdbasealpha", "multi_compile_lightpass",
+                      "multi_compile_shadowcollector", "multi_compile_prepassfinal", "multi_compile_fog",
+                      "multi_compile_instancing", "multi_compile_particles"}));
 }
 
 }  // namespace

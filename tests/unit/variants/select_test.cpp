@@ -55,7 +55,9 @@ TEST_P(VariantsSelectTableTest, PicksTheExpectedVariant) {
   EXPECT_EQ(diags.size(), 0u);
 }
 
-const Lines kForward = {"multi_compile_fwdbase", "multi_compile_fog", "shader_feature_local _ _NORMALMAP",
+// fwdbase's three reachable keywords as a plain product; selection among
+// Unity's listed shortcut combinations is tested in shortcut_sets_test.cpp.
+const Lines kForward = {"multi_compile DIRECTIONAL", "multi_compile _ LIGHTPROBE_SH", "multi_compile _ SHADOWS_SCREEN", "multi_compile_fog", "shader_feature_local _ _NORMALMAP",
                         "shader_feature _ _ALPHATEST_ON _ALPHABLEND_ON"};
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,0 +1,277 @@
+// facetc --check: shaders are compiled on -j workers, and their lines are
+// printed in path order as soon as every shader before them is done, so the
+// output never depends on -j and a CI log still shows progress.
+#include "check_mode.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <ctime>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+#include "check_reports.h"
+#include "units.h"
+
+namespace facet::tools {
+namespace {
+namespace fs = std::filesystem;
+
+// A checked shader and what standard error shows of it.
+struct Checked {
+  ShaderCheck check;
+  std::string shown;          // text diagnostics, coloured as --color asks
+  nlohmann::json json_diags;  // with --diagnostics-format=json
+};
+
+CheckDiagnostic resolve(const Diagnostic& d, const SourceMap& sources) {
+  CheckDiagnostic out{.id = d.id, .severity = d.severity, .message = d.message};
+  if (d.variant_total > 1) out.message += fmt::format(" [in {} of {} variants]", d.variant_hits, d.variant_total);
+  if (d.span.has_location() && d.span.file < sources.file_count()) {
+    out.file = sources.path(d.span.file);
+    LineColumn begin = sources.line_column(d.span.file, d.span.begin);
+    out.line = begin.line;
+    out.column = begin.column;
+    if (d.span.end > d.span.begin) {
+      LineColumn end = sources.line_column(d.span.file, d.span.end);
+      out.end_line = end.line;
+      out.end_column = end.column;
+    }
+  }
+  for (const DiagNote& note : d.notes) out.notes.push_back(note.message);
+  return out;
+}
+
+// Without --materials: the variant of no keywords of every pass (as
+// `--keywords ""` selects it), or every variant with --all-variants. With
+// --materials: every variant the manifests' materials use.
+CompileOptions check_options(const FacetcArgs& args, const StripInputs& strip, const ir::Shader& shader,
+                             unsigned jobs) {
+  CompileOptions options = stripped_options(compile_options(args, !strip.materials.has_value()), strip, shader);
+  options.jobs = jobs;
+  return options;
+}
+
+Checked check_one(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip, const std::string& path,
+                  unsigned jobs) {
+  auto started = std::chrono::steady_clock::now();
+  Checked out;
+  out.check.path = path;
+  SourceMap sources;
+  Diagnostics raw;
+  bool compiled = false;
+  // A linter over a whole project reports a shader that crashes the compiler
+  // as failing rather than ending the run.
+  try {
+    auto shader = compiler.load(path, sources, raw, args.backend);
+    if (shader) {
+      auto result = compiler.compile(*shader, check_options(args, strip, *shader, jobs), sources, raw);
+      if (result) {
+        compiled = true;
+        out.check.variants = result->stats.variants;
+      }
+    }
+  } catch (const std::exception& e) {
+    raw.add(DiagId::driver_bad_option, Severity::error, {}, fmt::format("internal error: {}", e.what()));
+  }
+  Diagnostics diags = apply_warning_options(raw, args.warnings);
+  out.check.ok = compiled && !diags.has_errors();
+  out.check.warnings = diags.warning_count();
+  for (const Diagnostic& d : diags.all()) out.check.diagnostics.push_back(resolve(d, sources));
+  out.check.text = render_text(diags, sources);
+  if (args.diagnostics_format == DiagnosticsFormat::json) {
+    out.json_diags = nlohmann::json::parse(render_json(diags, sources));
+  } else {
+    bool color = args.color.value_or(isatty(STDERR_FILENO) == 1);
+    out.shown = color ? render_text(diags, sources, {.color = true}) : out.check.text;
+  }
+  out.check.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+std::string plural(size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); }
+
+// "ok   path", "ok   path (2 warnings)" or "FAIL path: first error": the
+// path always starts in column 6.
+std::string check_line(const ShaderCheck& c) {
+  if (!c.ok) {
+    std::string error = first_error(c);
+    return fmt::format("FAIL {}: {}\n", c.path, error.empty() ? "error: the shader does not compile" : error);
+  }
+  std::string detail = c.warnings > 0 ? " (" + plural(c.warnings, "warning") + ")" : "";
+  if (c.variants == 0) detail += " (no variant selected)";
+  return fmt::format("ok   {}{}\n", c.path, detail);
+}
+
+// A report path that cannot be written is found before anything compiles,
+// so that a CI job misconfigured this way fails at once.
+std::optional<std::string> report_path_problem(const char* kind, const std::string& path) {
+  std::error_code ec;
+  fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  if (fs::is_directory(path, ec)) return fmt::format("cannot write the {} report '{}': it is a folder", kind, path);
+  if (!fs::is_directory(parent, ec)) {
+    return fmt::format("cannot write the {} report '{}': there is no folder '{}'", kind, path, parent.string());
+  }
+  if (::access(parent.c_str(), W_OK) != 0) {
+    return fmt::format("cannot write the {} report '{}': the folder '{}' is not writable", kind, path,
+                       parent.string());
+  }
+  return std::nullopt;
+}
+
+bool write_report(const char* kind, const std::string& path, const std::string& text, Console& console) {
+  Diagnostics diags;
+  if (write_file_atomically(path, text, diags)) return true;
+  console.err << fmt::format("facetc: error: cannot write the {} report '{}'\n", kind, path);
+  return false;
+}
+
+std::string utc_timestamp() {
+  std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
+  return text;
+}
+
+unsigned worker_count(unsigned requested, size_t shaders) {
+  unsigned n = requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+  return unsigned(std::max<size_t>(1, std::min<size_t>(n, shaders)));
+}
+
+}  // namespace
+
+std::string first_error(const ShaderCheck& check) {
+  for (const CheckDiagnostic& d : check.diagnostics) {
+    if (d.severity != Severity::error) continue;
+    std::string message = d.message;
+    for (char& c : message) {
+      if (c == '\n' || c == '\r') c = ' ';  // one line per shader
+    }
+    if (d.file.empty()) return "error: " + message;
+    return fmt::format("{}:{}:{}: error: {}", d.file, d.line, d.column, message);
+  }
+  return {};
+}
+
+std::vector<std::string> find_shaders(const std::vector<std::string>& inputs, std::vector<std::string>& errors) {
+  std::vector<std::string> out;
+  std::set<std::string> seen;
+  auto add = [&](const std::string& path) {
+    if (seen.insert(fs::path(path).lexically_normal().string()).second) out.push_back(path);
+  };
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    fs::file_status status = fs::status(input, ec);
+    if (!fs::exists(status)) {
+      errors.push_back(fmt::format("'{}' does not exist", input));
+      continue;
+    }
+    if (!fs::is_directory(status)) {
+      add(input);  // a file named on the command line is checked whatever its extension
+      continue;
+    }
+    std::vector<std::string> found;
+    for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+      std::error_code file_ec;
+      if (it->path().extension() == ".shader" && it->is_regular_file(file_ec)) found.push_back(it->path().string());
+    }
+    if (ec) {
+      errors.push_back(fmt::format("cannot read the folder '{}': {}", input, ec.message()));
+      continue;
+    }
+    if (found.empty()) {
+      errors.push_back(fmt::format("no .shader files under '{}'", input));
+      continue;
+    }
+    std::sort(found.begin(), found.end());
+    for (const std::string& f : found) add(f);
+  }
+  return out;
+}
+
+int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip, Console& console,
+              nlohmann::json& json_diagnostics) {
+  std::vector<std::string> errors;
+  std::vector<std::string> paths = find_shaders(args.inputs, errors);
+  if (!args.junit_file.empty()) {
+    if (auto e = report_path_problem("JUnit", args.junit_file)) errors.push_back(*e);
+  }
+  if (!args.sarif_file.empty()) {
+    if (auto e = report_path_problem("SARIF", args.sarif_file)) errors.push_back(*e);
+  }
+  if (!errors.empty()) {
+    for (const std::string& e : errors) console.err << "facetc: error: " << e << "\n";
+    return 1;
+  }
+
+  auto started = std::chrono::steady_clock::now();
+  std::string timestamp = utc_timestamp();
+  unsigned workers = worker_count(args.jobs, paths.size());
+  // Several shaders at once get a thread each; one shader alone gets -j's
+  // threads for its variants.
+  unsigned inner_jobs = workers > 1 ? 1 : args.jobs;
+  std::vector<std::optional<Checked>> results(paths.size());
+  std::mutex mutex;
+  std::condition_variable done;
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> threads;
+  for (unsigned w = 0; w < workers; ++w) {
+    threads.emplace_back([&] {
+      for (size_t i; (i = next++) < paths.size();) {
+        Checked c = check_one(args, compiler, strip, paths[i], inner_jobs);
+        std::lock_guard lock(mutex);
+        results[i] = std::move(c);
+        done.notify_all();
+      }
+    });
+  }
+
+  std::vector<ShaderCheck> checks;
+  size_t passed = 0, warnings = 0;
+  for (size_t i = 0; i < paths.size(); ++i) {
+    Checked c;
+    {
+      std::unique_lock lock(mutex);
+      done.wait(lock, [&] { return results[i].has_value(); });
+      c = std::move(*results[i]);
+      results[i].reset();
+    }
+    console.out << check_line(c.check);
+    console.out.flush();
+    if (args.diagnostics_format == DiagnosticsFormat::json) {
+      for (auto& d : c.json_diags) json_diagnostics.push_back(std::move(d));
+    } else {
+      console.err << c.shown;
+      console.err.flush();
+    }
+    passed += c.check.ok ? 1 : 0;
+    warnings += c.check.warnings;
+    checks.push_back(std::move(c.check));
+  }
+  for (std::thread& t : threads) t.join();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  console.out << fmt::format("{} of {} shaders compile; {}\n", passed, paths.size(), plural(warnings, "warning"));
+
+  bool reports_ok = true;
+  if (!args.junit_file.empty()) {
+    reports_ok &= write_report("JUnit", args.junit_file, junit_xml(checks, seconds, timestamp), console);
+  }
+  if (!args.sarif_file.empty()) {
+    std::error_code ec;
+    std::string base = fs::current_path(ec).string();
+    reports_ok &= write_report("SARIF", args.sarif_file, sarif_json(checks, base), console);
+  }
+  return passed == paths.size() && reports_ok ? 0 : 1;
+}
+
+}  // namespace facet::tools

@@ -1,0 +1,92 @@
+// Real-world inputs through the real facetc: Fallback-only shaders, Unity's
+// version define, Unity-style includes (a byte-order mark, matrix swizzles,
+// the implicit UnityShaderUtilities).
+#include <nlohmann/json.hpp>
+
+#include "facetc_test_util.h"
+
+namespace facet::tools::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+const char* kFallbackOnly = "Shader \"Legacy/Alias\" {\n  Fallback \"Diffuse\"\n}\n";
+
+TEST_F(FacetcTest, AFallbackOnlyShaderCompilesToAPackageWithoutPasses) {
+  write_all(dir_ / "alias.shader", kFallbackOnly);
+  FacetcRun run = facetc({"alias.shader", "-o", "alias.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("alias.shader:1:1: note: shader 'Legacy/Alias' has no SubShader; Unity draws it "
+                                 "with its Fallback 'Diffuse'"));
+  FacetcRun dump = facetc({"--dump", "alias.facetpkg"});
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  auto json = nlohmann::json::parse(dump.out);
+  EXPECT_TRUE(json["passes"].empty());
+  EXPECT_EQ(json["shader"]["fallback"], "Diffuse");
+}
+
+TEST_F(FacetcTest, AShaderWithNeitherSubShaderNorFallbackFails) {
+  write_all(dir_ / "empty.shader", "Shader \"Empty\" {\n}\n");
+  FacetcRun run = facetc({"empty.shader", "-o", "empty.facetpkg"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("empty.shader:1:1: error: shader 'Empty' has no SubShader"));
+  EXPECT_EQ(files(), std::vector<std::string>{"empty.shader"});
+}
+
+// UNITY_VERSION as Unity writes it; the default is 2019.4.
+const char* kVersionProbe = R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#if UNITY_VERSION != EXPECTED
+#error wrong UNITY_VERSION
+#endif
+#if !defined(UNITY_COMPILER_HLSL) || !defined(SHADER_API_DESKTOP)
+#error the Unity compiler defines are missing
+#endif
+float4 vert(float4 v : POSITION) : SV_Position { return UnityObjectToClipPos(v); }
+float4 frag() : SV_Target { return 1; }
+ENDCG
+} } }
+)";
+
+TEST_F(FacetcTest, UnityVersionDefinesUnityVersionAndUnityObjectToClipPosNeedsNoInclude) {
+  write_all(dir_ / "v.shader", kVersionProbe);
+  EXPECT_EQ(facetc({"v.shader", "-DEXPECTED=201940", "-o", "a.facetpkg"}).exit_code, 0);
+  EXPECT_EQ(facetc({"v.shader", "--unity-version", "2017.4", "-DEXPECTED=201740", "-o", "b.facetpkg"}).exit_code, 0);
+  EXPECT_EQ(facetc({"v.shader", "--unity-version", "2018.4.36", "-DEXPECTED=201849", "-o", "c.facetpkg"}).exit_code, 0);
+  FacetcRun wrong = facetc({"v.shader", "--unity-version", "2017.4", "-DEXPECTED=201940", "-o", "d.facetpkg"});
+  EXPECT_EQ(wrong.exit_code, 1);
+  EXPECT_THAT(wrong.err, HasSubstr("wrong UNITY_VERSION"));
+}
+
+TEST_F(FacetcTest, ABadUnityVersionIsAUsageError) {
+  write_all(dir_ / "v.shader", kVersionProbe);
+  for (const char* bad : {"2017", "latest", "2017.4b", "2017.12"}) {
+    FacetcRun run = facetc({"v.shader", "--unity-version", bad, "-o", "x.facetpkg"});
+    EXPECT_EQ(run.exit_code, 2) << bad;
+    EXPECT_THAT(run.err, HasSubstr("--unity-version needs a version such as 2017.4")) << bad;
+    EXPECT_FALSE(fs::exists(dir_ / "x.facetpkg"));
+  }
+}
+
+TEST_F(FacetcTest, AnIncludeWithAByteOrderMarkAndMatrixSwizzlesCompiles) {
+  write_all(dir_ / "lib.cginc", "\xEF\xBB\xBF// saved by a Windows editor\n"
+                                "float3 ObjectOrigin() { return unity_ObjectToWorld._14_24_34; }\n"
+                                "float ObjectScaleX() { return unity_ObjectToWorld._m00; }\n");
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#include "lib.cginc"
+float4 vert(float4 v : POSITION) : SV_Position { return UnityObjectToClipPos(v.xyz + ObjectOrigin() * ObjectScaleX()); }
+float4 frag() : SV_Target { return 1; }
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"s.shader", "-o", "s.facetpkg"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
