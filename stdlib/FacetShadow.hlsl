@@ -14,11 +14,17 @@
 #include "FacetBuiltins.hlsl"
 
 // The light's shadow map (depth; white without one), set 1 binding 2
-// (docs/binding-model.md). Unity declares it in AutoLight.cginc too.
+// (docs/binding-model.md). As in Unity's shadow library, a program that
+// declares _ShadowMapTexture itself before the includes (and says so with
+// SHADOWMAPSAMPLER_DEFINED or SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED, as
+// Internal-ScreenSpaceShadows does) keeps its own declaration, and the
+// functions below sample that one.
+#if !defined(SHADOWMAPSAMPLER_DEFINED) && !defined(SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED)
+sampler2D _ShadowMapTexture : register(s2, space1);
+#endif
 #ifndef SHADOWMAPSAMPLER_DEFINED
 #define SHADOWMAPSAMPLER_DEFINED
 #endif
-sampler2D _ShadowMapTexture : register(s2, space1);
 
 // 1 where the map's depth is not nearer to the light than `depth`, else 0.
 float FacetShadowCompare(float2 uv, float depth)

@@ -195,54 +195,54 @@ half4 LightingSpeedTreeSubsurface_Deferred(SurfaceOutputStandard s, half3 viewDi
     return LightingStandard_Deferred(s, viewDir, gi, outGBuffer0, outGBuffer1, outGBuffer2);
 }
 
-void SpeedTreeSurf(Input IN, inout SurfaceOutputStandard OUT)
+void SpeedTreeSurf(Input i, inout SurfaceOutputStandard o)
 {
-    fixed4 color = tex2D(_MainTex, IN.uv_MainTex) * _Color;
+    fixed4 color = tex2D(_MainTex, i.uv_MainTex) * _Color;
 
-    OUT.Alpha = color.a * IN.color.a;
-    clip(OUT.Alpha - 0.3333);
+    o.Alpha = color.a * i.color.a;
+    clip(o.Alpha - 0.3333);
 
-    OUT.Albedo = color.rgb;
+    o.Albedo = color.rgb;
 #ifdef EFFECT_HUE_VARIATION
     {
         // shift towards the hue colour, keeping the brightest channel half-way
-        half3 shifted = lerp(OUT.Albedo, _HueVariationColor.rgb, IN.color.g);
-        half maxBase = max(OUT.Albedo.r, max(OUT.Albedo.g, OUT.Albedo.b));
+        half3 shifted = lerp(o.Albedo, _HueVariationColor.rgb, i.color.g);
+        half maxBase = max(o.Albedo.r, max(o.Albedo.g, o.Albedo.b));
         half maxShifted = max(shifted.r, max(shifted.g, shifted.b));
         shifted *= (maxBase / maxShifted) * 0.5f + 0.5f;
-        OUT.Albedo = saturate(shifted);
+        o.Albedo = saturate(shifted);
     }
 #endif
 
 #ifdef EFFECT_BUMP
-    OUT.Normal = UnpackNormal(tex2D(_BumpMap, IN.uv_MainTex));
+    o.Normal = UnpackNormal(tex2D(_BumpMap, i.uv_MainTex));
 #elif defined(EFFECT_BACKSIDE_NORMALS) || defined(EFFECT_BILLBOARD)
-    OUT.Normal = float3(0, 0, 1);
+    o.Normal = float3(0, 0, 1);
 #endif
 
 #ifdef EFFECT_BACKSIDE_NORMALS
-    if (IN.facing < 0.5)
-        OUT.Normal.z = -OUT.Normal.z;   // two-sided leaves: light the back face from behind
+    if (i.facing < 0.5)
+        o.Normal.z = -o.Normal.z;   // two-sided leaves: light the back face from behind
 #endif
 
 #ifdef EFFECT_BILLBOARD
-    OUT.Normal.z *= 0.5;   // flatter billboard normals match the 3D tree's GI better
-    OUT.Normal = normalize(OUT.Normal);
+    o.Normal.z *= 0.5;   // flatter billboard normals match the 3D tree's GI better
+    o.Normal = normalize(o.Normal);
 #endif
 
 #ifdef EFFECT_EXTRA_TEX
-    fixed4 extra = tex2D(_ExtraTex, IN.uv_MainTex);
-    OUT.Smoothness = extra.r;
-    OUT.Metallic = extra.g;
-    OUT.Occlusion = extra.b * IN.color.r;
+    fixed4 extra = tex2D(_ExtraTex, i.uv_MainTex);
+    o.Smoothness = extra.r;
+    o.Metallic = extra.g;
+    o.Occlusion = extra.b * i.color.r;
 #else
-    OUT.Smoothness = _Glossiness;
-    OUT.Metallic = _Metallic;
-    OUT.Occlusion = IN.color.r;
+    o.Smoothness = _Glossiness;
+    o.Metallic = _Metallic;
+    o.Occlusion = i.color.r;
 #endif
 
 #ifdef EFFECT_SUBSURFACE
-    OUT.Emission = tex2D(_SubsurfaceTex, IN.uv_MainTex).rgb * _SubsurfaceColor.rgb;
+    o.Emission = tex2D(_SubsurfaceTex, i.uv_MainTex).rgb * _SubsurfaceColor.rgb;
 #endif
 }
 

@@ -32,11 +32,11 @@ struct SpeedTreeBillboardData
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
 
-void SpeedTreeBillboardVert(inout SpeedTreeBillboardData IN, out Input OUT)
+void SpeedTreeBillboardVert(inout SpeedTreeBillboardData v, out Input o)
 {
-    UNITY_INITIALIZE_OUTPUT(Input, OUT);
+    UNITY_INITIALIZE_OUTPUT(Input, o);
 
-    float3 worldPos = IN.vertex.xyz + float3(unity_ObjectToWorld[0].w, unity_ObjectToWorld[1].w, unity_ObjectToWorld[2].w);
+    float3 worldPos = v.vertex.xyz + float3(unity_ObjectToWorld[0].w, unity_ObjectToWorld[1].w, unity_ObjectToWorld[2].w);
 
 #ifdef BILLBOARD_FACE_CAMERA_POS
     // Face the camera's position (not only its direction): the plane's
@@ -52,32 +52,32 @@ void SpeedTreeBillboardVert(inout SpeedTreeBillboardData IN, out Input OUT)
     float angle = unity_BillboardCameraXZAngle;
 #endif
 
-    float2 percent = IN.texcoord.xy;
-    float3 offset = (percent.x - 0.5f) * unity_BillboardSize.x * IN.texcoord1.x * billboardTangent;
-    offset.y += (percent.y * unity_BillboardSize.y + unity_BillboardSize.z) * IN.texcoord1.y;
+    float2 percent = v.texcoord.xy;
+    float3 offset = (percent.x - 0.5f) * unity_BillboardSize.x * v.texcoord1.x * billboardTangent;
+    offset.y += (percent.y * unity_BillboardSize.y + unity_BillboardSize.z) * v.texcoord1.y;
 
 #ifdef ENABLE_WIND
     if (FacetSpeedTreeWindQuality() > WIND_QUALITY_NONE)
-        offset = GlobalWind(offset, worldPos, true, _ST_WindVector.xyz, IN.texcoord1.w);
+        offset = GlobalWind(offset, worldPos, true, _ST_WindVector.xyz, v.texcoord1.w);
 #endif
 
-    IN.vertex.xyz += offset;
-    IN.vertex.w = 1.0f;
-    IN.normal = billboardNormal;
-    IN.tangent = float4(billboardTangent, -1);
+    v.vertex.xyz += offset;
+    v.vertex.w = 1.0f;
+    v.normal = billboardNormal;
+    v.tangent = float4(billboardTangent, -1);
 
     // The atlas image whose viewing angle is nearest (plus the tree's own rotation).
-    angle += IN.texcoord1.z;
+    angle += v.texcoord1.z;
     int image = (int)fmod(floor(angle * unity_BillboardInfo.y + 0.5f), unity_BillboardInfo.x);
     float4 imageTexCoords = unity_BillboardImageTexCoords[image];
-    OUT.mainTexUV = imageTexCoords.w < 0
+    o.mainTexUV = imageTexCoords.w < 0
         ? imageTexCoords.xy - imageTexCoords.zw * percent.yx   // stored rotated in the atlas
         : imageTexCoords.xy + imageTexCoords.zw * percent;
 
-    OUT.color = _Color;
+    o.color = _Color;
 
 #ifdef EFFECT_HUE_VARIATION
-    OUT.HueVariationAmount = saturate(frac(worldPos.x + worldPos.y + worldPos.z) * _HueVariation.a);
+    o.HueVariationAmount = saturate(frac(worldPos.x + worldPos.y + worldPos.z) * _HueVariation.a);
 #endif
 }
 

@@ -50,30 +50,30 @@ sampler2D _MainTex;
 
 fixed4 _Color;
 
-void SpeedTreeVert(inout SpeedTreeVB IN, out Input OUT)
+void SpeedTreeVert(inout SpeedTreeVB v, out Input o)
 {
-    UNITY_INITIALIZE_OUTPUT(Input, OUT);
+    UNITY_INITIALIZE_OUTPUT(Input, o);
 
-    OUT.mainTexUV = IN.texcoord.xy;
-    OUT.color = _Color;
-    OUT.color.rgb *= IN.color.r;   // ambient occlusion
+    o.mainTexUV = v.texcoord.xy;
+    o.color = _Color;
+    o.color.rgb *= v.color.r;   // ambient occlusion
 
 #ifdef EFFECT_HUE_VARIATION
     // per tree (its position) plus a little per vertex
     float3 treePos = float3(unity_ObjectToWorld[0].w, unity_ObjectToWorld[1].w, unity_ObjectToWorld[2].w);
     float amount = frac(treePos.x + treePos.y + treePos.z);
-    amount += frac(IN.vertex.x + IN.normal.y + IN.normal.x) * 0.5 - 0.3;
-    OUT.HueVariationAmount = saturate(amount * _HueVariation.a);
+    amount += frac(v.vertex.x + v.normal.y + v.normal.x) * 0.5 - 0.3;
+    o.HueVariationAmount = saturate(amount * _HueVariation.a);
 #endif
 
 #ifdef GEOM_TYPE_BRANCH_DETAIL
     // Seam blending (alpha 0) and detail texturing use separate parts of the
     // mesh, so the two meanings of .z never interpolate into each other.
-    OUT.Detail.xy = IN.texcoord2.xy;
-    OUT.Detail.z = IN.color.a == 0 ? IN.texcoord2.z : 2.5f;
+    o.Detail.xy = v.texcoord2.xy;
+    o.Detail.z = v.color.a == 0 ? v.texcoord2.z : 2.5f;
 #endif
 
-    OffsetSpeedTreeVertex(IN, unity_LODFade.x);
+    OffsetSpeedTreeVertex(v, unity_LODFade.x);
 }
 
 #if defined(EFFECT_BUMP)
@@ -107,34 +107,34 @@ inline half3 FacetSpeedTreeHueShift(half3 color, half3 hue, half amount)
     return saturate(shifted);
 }
 
-void SpeedTreeFrag(Input IN, out SpeedTreeFragOut OUT)
+void SpeedTreeFrag(Input i, out SpeedTreeFragOut o)
 {
-    half4 diffuse = tex2D(_MainTex, IN.mainTexUV);
+    half4 diffuse = tex2D(_MainTex, i.mainTexUV);
 
-    OUT.Alpha = diffuse.a * _Color.a;
+    o.Alpha = diffuse.a * _Color.a;
 #ifdef SPEEDTREE_ALPHATEST
-    clip(OUT.Alpha - _Cutoff);
+    clip(o.Alpha - _Cutoff);
 #endif
 
 #ifdef GEOM_TYPE_BRANCH_DETAIL
-    half4 detail = tex2D(_DetailTex, IN.Detail.xy);
-    half detailBlend = IN.Detail.z < 2.0f ? saturate(IN.Detail.z) : detail.a;
+    half4 detail = tex2D(_DetailTex, i.Detail.xy);
+    half detailBlend = i.Detail.z < 2.0f ? saturate(i.Detail.z) : detail.a;
     diffuse.rgb = lerp(diffuse.rgb, detail.rgb, detailBlend);
 #endif
 
 #ifdef EFFECT_HUE_VARIATION
-    diffuse.rgb = FacetSpeedTreeHueShift(diffuse.rgb, _HueVariation.rgb, IN.HueVariationAmount);
+    diffuse.rgb = FacetSpeedTreeHueShift(diffuse.rgb, _HueVariation.rgb, i.HueVariationAmount);
 #endif
 
-    OUT.Albedo = diffuse.rgb * IN.color.rgb;
+    o.Albedo = diffuse.rgb * i.color.rgb;
 
 #if defined(EFFECT_BUMP)
     #if defined(LIGHTMAP_ON)
-        OUT.Normal = fixed3(0, 0, 1);
+        o.Normal = fixed3(0, 0, 1);
     #else
-        OUT.Normal = UnpackNormal(tex2D(_BumpMap, IN.mainTexUV));
+        o.Normal = UnpackNormal(tex2D(_BumpMap, i.mainTexUV));
         #ifdef GEOM_TYPE_BRANCH_DETAIL
-            OUT.Normal = lerp(OUT.Normal, UnpackNormal(tex2D(_BumpMap, IN.Detail.xy)), detailBlend);
+            o.Normal = lerp(o.Normal, UnpackNormal(tex2D(_BumpMap, i.Detail.xy)), detailBlend);
         #endif
     #endif
 #endif

@@ -136,21 +136,21 @@ void SplatmapVert(inout appdata_full v, out Input data)
 // layer's smoothness, defaultAlpha, in the alpha) and of their normal maps
 // (mixedNormal, tangent space, only with _NORMALMAP).
 #ifdef TERRAIN_STANDARD_SHADER
-void SplatmapMix(Input IN, half4 defaultAlpha, out half4 splat_control, out half weight, out fixed4 mixedDiffuse, inout fixed3 mixedNormal)
+void SplatmapMix(Input data, half4 defaultAlpha, out half4 splat_control, out half weight, out fixed4 mixedDiffuse, inout fixed3 mixedNormal)
 #else
-void SplatmapMix(Input IN, out half4 splat_control, out half weight, out fixed4 mixedDiffuse, inout fixed3 mixedNormal)
+void SplatmapMix(Input data, out half4 splat_control, out half weight, out fixed4 mixedDiffuse, inout fixed3 mixedNormal)
 #endif
 {
 #ifdef _ALPHATEST_ON
-    ClipHoles(IN.tc.xy);
+    ClipHoles(data.tc.xy);
 #endif
 
     // Put the terrain's edges on the control map's texel centres. Without a
     // texel size (a shader with no _Control property, nothing filled it) the
     // uv is used as it is.
-    float2 controlUV = IN.tc.xy;
+    float2 controlUV = data.tc.xy;
     if (_Control_TexelSize.z > 0.0)
-        controlUV = (IN.tc.xy * (_Control_TexelSize.zw - 1.0f) + 0.5f) * _Control_TexelSize.xy;
+        controlUV = (data.tc.xy * (_Control_TexelSize.zw - 1.0f) + 0.5f) * _Control_TexelSize.xy;
     splat_control = tex2D(_Control, controlUV);
     weight = dot(splat_control, half4(1, 1, 1, 1));
 
@@ -160,10 +160,10 @@ void SplatmapMix(Input IN, out half4 splat_control, out half weight, out fixed4 
 
     splat_control /= (weight + 1e-3f);
 
-    float2 uv0 = TRANSFORM_TEX(IN.tc.xy, _Splat0);
-    float2 uv1 = TRANSFORM_TEX(IN.tc.xy, _Splat1);
-    float2 uv2 = TRANSFORM_TEX(IN.tc.xy, _Splat2);
-    float2 uv3 = TRANSFORM_TEX(IN.tc.xy, _Splat3);
+    float2 uv0 = TRANSFORM_TEX(data.tc.xy, _Splat0);
+    float2 uv1 = TRANSFORM_TEX(data.tc.xy, _Splat1);
+    float2 uv2 = TRANSFORM_TEX(data.tc.xy, _Splat2);
+    float2 uv3 = TRANSFORM_TEX(data.tc.xy, _Splat3);
 
 #ifdef TERRAIN_STANDARD_SHADER
     const half4 layerAlpha = defaultAlpha;   // rgb from the layer, alpha (smoothness) scaled per layer
@@ -187,7 +187,7 @@ void SplatmapMix(Input IN, out half4 splat_control, out half weight, out fixed4 
     // Per-pixel normal from the terrain's normal map (world y-up); the layer
     // normal is rotated into its frame. The result is swizzled to xzy, the
     // tangent-space order of the vertex frame (tangent x, bitangent z, normal y).
-    float3 geomNormal = normalize(tex2D(_TerrainNormalmapTexture, IN.tc.zw).xyz * 2 - 1);
+    float3 geomNormal = normalize(tex2D(_TerrainNormalmapTexture, data.tc.zw).xyz * 2 - 1);
     #ifdef _NORMALMAP
         float3 geomTangent = normalize(cross(geomNormal, float3(0, 0, 1)));
         float3 geomBitangent = normalize(cross(geomTangent, geomNormal));
@@ -205,18 +205,18 @@ void SplatmapMix(Input IN, out half4 splat_control, out half weight, out fixed4 
 
 // finalcolor: restore the weight taken out by SplatmapMix, then fog (towards
 // black in add passes, so the fog colour is added only once).
-void SplatmapFinalColor(Input IN, TERRAIN_SURFACE_OUTPUT o, inout fixed4 color)
+void SplatmapFinalColor(Input data, TERRAIN_SURFACE_OUTPUT o, inout fixed4 color)
 {
     color *= o.Alpha;
 #ifdef TERRAIN_SPLAT_ADDPASS
-    UNITY_APPLY_FOG_COLOR(IN.fogCoord, color, fixed4(0, 0, 0, 0));
+    UNITY_APPLY_FOG_COLOR(data.fogCoord, color, fixed4(0, 0, 0, 0));
 #else
-    UNITY_APPLY_FOG(IN.fogCoord, color);
+    UNITY_APPLY_FOG(data.fogCoord, color);
 #endif
 }
 
 // finalprepass (legacy deferred lighting): weight the normal/specular buffer.
-void SplatmapFinalPrepass(Input IN, TERRAIN_SURFACE_OUTPUT o, inout fixed4 normalSpec)
+void SplatmapFinalPrepass(Input data, TERRAIN_SURFACE_OUTPUT o, inout fixed4 normalSpec)
 {
     normalSpec *= o.Alpha;
 }
@@ -224,7 +224,7 @@ void SplatmapFinalPrepass(Input IN, TERRAIN_SURFACE_OUTPUT o, inout fixed4 norma
 // finalgbuffer (deferred): weight diffuse, specular/smoothness, normal and
 // emission. (What UnityGBuffer.cginc's UnityStandardDataApplyWeightToGbuffer
 // does; written out so this file does not depend on the deferred library.)
-void SplatmapFinalGBuffer(Input IN, TERRAIN_SURFACE_OUTPUT o, inout half4 outGBuffer0, inout half4 outGBuffer1, inout half4 outGBuffer2, inout half4 emission)
+void SplatmapFinalGBuffer(Input data, TERRAIN_SURFACE_OUTPUT o, inout half4 outGBuffer0, inout half4 outGBuffer1, inout half4 outGBuffer2, inout half4 emission)
 {
     outGBuffer0.rgb *= o.Alpha;
     outGBuffer1 *= o.Alpha;

@@ -3,7 +3,8 @@
 // UNITY_SETUP_BRDF_INPUT (SpecularSetup, MetallicSetup or RoughnessSetup),
 // the lights, GI, and the ForwardBase / ForwardAdd vertex and fragment
 // functions that UnityStandardCoreForward.cginc exposes as
-// vertBase/fragBase/vertAdd/fragAdd. Lighting goes through UNITY_BRDF_PBS, so
+// vertBase/fragBase/vertAdd/fragAdd, and the Deferred pass's G-buffer
+// writer (vertDeferred/fragDeferred). Lighting goes through UNITY_BRDF_PBS, so
 // a shader that defines it before including this file swaps the BRDF.
 #ifndef UNITY_STANDARD_CORE_INCLUDED
 #define UNITY_STANDARD_CORE_INCLUDED
@@ -17,6 +18,7 @@
 #include "UnityGlobalIllumination.cginc"
 #include "UnityStandardBRDF.cginc"
 #include "AutoLight.cginc"
+#include "UnityGBuffer.cginc"
 
 // ---- surface data ---------------------------------------------------------------
 struct FragmentCommonData
@@ -351,5 +353,111 @@ half4 fragForwardAddInternal(VertexOutputForwardAdd i)
 }
 
 half4 fragForwardAdd(VertexOutputForwardAdd i) : SV_Target { return fragForwardAddInternal(i); }
+
+// ---- Deferred ---------------------------------------------------------------------
+// The G-buffer pass: no analytic light, only the surface (UnityGBuffer.cginc's
+// layout in targets 0..2) and what the surface gives off by itself, ambient
+// and reflections through GI plus emission, in target 3. Without UNITY_HDR_ON
+// target 3 is a logarithmically encoded buffer (exp2(-x)), as Unity's LDR
+// light buffer expects.
+struct VertexOutputDeferred
+{
+    UNITY_POSITION(pos);
+    float4 tex : TEXCOORD0;
+    float3 eyeVec : TEXCOORD1;           // eye -> vertex
+    float4 tangentToWorld0 : TEXCOORD2;  // rows of tangentToWorld | viewDirForParallax in w
+    float4 tangentToWorld1 : TEXCOORD3;
+    float4 tangentToWorld2 : TEXCOORD4;
+    half4 ambientOrLightmapUV : TEXCOORD5;
+    float3 posWorld : TEXCOORD6;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+    UNITY_VERTEX_OUTPUT_STEREO
+};
+
+VertexOutputDeferred vertDeferred(VertexInput v)
+{
+    UNITY_SETUP_INSTANCE_ID(v);
+    VertexOutputDeferred o;
+    UNITY_INITIALIZE_OUTPUT(VertexOutputDeferred, o);
+    UNITY_TRANSFER_INSTANCE_ID(v, o);
+    UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
+
+    float4 posWorld = mul(unity_ObjectToWorld, v.vertex);
+    o.posWorld = posWorld.xyz;
+    o.pos = UnityObjectToClipPos(v.vertex);
+    o.tex = TexCoords(v);
+    o.eyeVec = NormalizePerVertexNormal(posWorld.xyz - _WorldSpaceCameraPos);
+    float3 normalWorld = UnityObjectToWorldNormal(v.normal);
+    float4 rows[3];
+    FacetStandardTangentFrame(v, normalWorld, rows);
+    o.tangentToWorld0 = rows[0];
+    o.tangentToWorld1 = rows[1];
+    o.tangentToWorld2 = rows[2];
+    o.ambientOrLightmapUV = VertexGIForward(v, posWorld.xyz, normalWorld);
+    return o;
+}
+
+void fragDeferred(VertexOutputDeferred i,
+                  out half4 outGBuffer0 : SV_Target0,
+                  out half4 outGBuffer1 : SV_Target1,
+                  out half4 outGBuffer2 : SV_Target2,
+                  out half4 outEmission : SV_Target3
+#if defined(SHADOWS_SHADOWMASK) && (UNITY_ALLOWED_MRT_COUNT > 4)
+                  , out half4 outShadowMask : SV_Target4
+#endif
+)
+{
+    UNITY_APPLY_DITHER_CROSSFADE(i.pos.xy);
+    FRAGMENT_SETUP(s)
+    UNITY_SETUP_INSTANCE_ID(i);
+
+    // The lights come later, from the G-buffer; here only GI.
+    half occlusion = Occlusion(i.tex.xy);
+    // With reflection buffers the reflection probes are drawn as their own
+    // deferred pass; otherwise the surface samples them here.
+#if UNITY_ENABLE_REFLECTION_BUFFERS
+    bool reflections = false;
+#else
+    bool reflections = true;
+#endif
+    UnityGI gi = FragmentGI(s, occlusion, i.ambientOrLightmapUV, 1.0, DummyLight(), reflections);
+    half3 selfLit = UNITY_BRDF_PBS(s.diffColor, s.specColor, s.oneMinusReflectivity, s.smoothness, s.normalWorld,
+                                   -s.eyeVec, gi.light, gi.indirect).rgb;
+#ifdef _EMISSION
+    selfLit += Emission(i.tex.xy);
+#endif
+#ifndef UNITY_HDR_ON
+    selfLit = exp2(-selfLit);
+#endif
+
+    UnityStandardData gbuffer;
+    gbuffer.diffuseColor = s.diffColor;
+    gbuffer.occlusion = occlusion;
+    gbuffer.specularColor = s.specColor;
+    gbuffer.smoothness = s.smoothness;
+    gbuffer.normalWorld = s.normalWorld;
+    UnityStandardDataToGbuffer(gbuffer, outGBuffer0, outGBuffer1, outGBuffer2);
+    outEmission = half4(selfLit, 1);
+#if defined(SHADOWS_SHADOWMASK) && (UNITY_ALLOWED_MRT_COUNT > 4)
+    outShadowMask = UnityGetRawBakedOcclusions(i.ambientOrLightmapUV.xy, s.posWorld);
+#endif
+}
+
+// FragmentGI's older signature, from the surface values one by one.
+inline UnityGI FragmentGI(float3 posWorld, half occlusion, half4 i_ambientOrLightmapUV, half atten, half smoothness,
+                          half3 normalWorld, half3 eyeVec, UnityLight light, bool reflections)
+{
+    FragmentCommonData s = (FragmentCommonData)0;
+    s.smoothness = smoothness;
+    s.normalWorld = normalWorld;
+    s.eyeVec = eyeVec;
+    s.posWorld = posWorld;
+    return FragmentGI(s, occlusion, i_ambientOrLightmapUV, atten, light, reflections);
+}
+inline UnityGI FragmentGI(float3 posWorld, half occlusion, half4 i_ambientOrLightmapUV, half atten, half smoothness,
+                          half3 normalWorld, half3 eyeVec, UnityLight light)
+{
+    return FragmentGI(posWorld, occlusion, i_ambientOrLightmapUV, atten, smoothness, normalWorld, eyeVec, light, true);
+}
 
 #endif // UNITY_STANDARD_CORE_INCLUDED

@@ -6,10 +6,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
+#include "backend/argument_casts.h"
 #include "backend/glslang_frontend.h"
+#include "backend/hlsl_rewrite.h"
 #include "backend/includer.h"
 #include "backend/info_log.h"
 #include "backend/reflect.h"
@@ -122,6 +127,71 @@ Result<std::string> Backend::source_text(const ir::Shader& shader, const ir::Pro
   return out.preprocessed;
 }
 
+namespace {
+
+// The line `line` (1-based) of the file `file` as glslang saw it: a chunk of
+// the program, or a file the includer returned.
+std::string_view log_line(const ir::Program& program, const std::string& root_name, const FileIncluder& includer,
+                          const std::string& file, uint32_t line) {
+  auto nth_line = [](std::string_view text, uint32_t n) -> std::string_view {
+    size_t pos = 0;
+    for (uint32_t l = 1; l < n; ++l) {
+      pos = text.find('\n', pos);
+      if (pos == std::string_view::npos) return {};
+      ++pos;
+    }
+    return text.substr(pos, text.find('\n', pos) - pos);
+  };
+  if (const std::string* text = includer.text_of(file)) return nth_line(*text, line);
+  std::vector<const ir::SourceChunk*> chunks;
+  for (const ir::SourceChunk& c : program.includes) chunks.push_back(&c);
+  chunks.push_back(&program.body);
+  for (const ir::SourceChunk* c : chunks) {
+    bool same_file = c->line_file.empty() ? file == root_name : file == c->line_file;
+    if (same_file && line >= c->first_line) {
+      std::string_view l = nth_line(c->text, line - c->first_line + 1);
+      if (!l.empty()) return l;
+    }
+  }
+  return {};
+}
+
+// The variables assigned on the lines where glslang refused to modify a
+// uniform (its message names the block, "$Global", not the variable), less
+// those already in `known`.
+std::vector<std::string> assigned_uniforms(const std::vector<LogMessage>& messages, const ir::Program& program,
+                                           const std::string& root_name, const FileIncluder& includer,
+                                           const std::vector<std::string>& known) {
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::vector<std::string> out;
+  for (const LogMessage& m : messages) {
+    if (m.severity != Severity::error || m.text.find("can't modify a uniform") == std::string::npos) continue;
+    std::string_view line = log_line(program, root_name, includer, m.file, m.line);
+    for (size_t i = 0; i < line.size(); ++i) {
+      bool assign = line[i] == '=' && (i + 1 >= line.size() || line[i + 1] != '=') &&
+                    (i == 0 || std::string_view("=!<>").find(line[i - 1]) == std::string_view::npos);
+      if (!assign) continue;
+      size_t end = i;
+      while (end > 0 && std::string_view(" \t+-*/%&|^").find(line[end - 1]) != std::string_view::npos) --end;
+      while (end > 0 && (line[end - 1] == ']' || std::isalnum(static_cast<unsigned char>(line[end - 1])) ||
+                         line[end - 1] == '_' || line[end - 1] == '.' || line[end - 1] == '[')) {
+        --end;
+      }
+      size_t stop = end;
+      while (stop < line.size() && ident(line[stop])) ++stop;
+      std::string name(line.substr(end, stop - end));
+      if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) continue;
+      if (std::find(known.begin(), known.end(), name) == known.end() &&
+          std::find(out.begin(), out.end(), name) == out.end()) {
+        out.push_back(name);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                        const std::vector<std::string>& keywords, const BackendOptions& options,
                                        SourceMap& sources, Diagnostics& diags) const {
@@ -130,12 +200,50 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
   if (!check_nesting(program, diags)) return failure("nesting too deep");
   size_t errors_before = diags.error_count();
   AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
-  FileIncluder includer(options, stdlib_dir(options));
-  GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, includer);
-  add_included_files(includer, sources);
-  LogContext context{program, stage, shader.file, source, includer, sources,
+  auto includer = std::make_unique<FileIncluder>(options, stdlib_dir(options));
+  GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, *includer);
+  // fxc truncates a wider vector argument (X3206) where glslang finds no
+  // overload: retry with the arguments cast, and warn at each call.
+  // Likewise an assignment to a global uniform, which fxc turns into a write
+  // to a per-invocation copy.
+  std::optional<ir::Program> cast_program;
+  std::vector<CastCall> casts;
+  std::vector<std::string> assigned;
+  for (int attempt = 0; attempt < 4 && !out.ok && is_hlsl(program); ++attempt) {
+    ir::Program retry = cast_program ? *cast_program : program;
+    std::vector<LogMessage> messages = parse_info_log(out.parse_log);
+    std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, assigned);
+    std::vector<CastCall> more = cast_rejected_calls(retry, source.root_name, messages);
+    if (more.empty() && more_assigned.empty()) break;
+    for (ir::SourceChunk& chunk : retry.includes) chunk.text = rewrite_assigned_uniforms(chunk.text, more_assigned);
+    retry.body.text = rewrite_assigned_uniforms(retry.body.text, more_assigned);
+    std::vector<std::string> all_assigned = assigned;
+    all_assigned.insert(all_assigned.end(), more_assigned.begin(), more_assigned.end());
+    AssembledSource retry_source = assemble_source(retry, stage, keywords, options, shader_path(shader, sources));
+    auto retry_includer = std::make_unique<FileIncluder>(options, stdlib_dir(options));
+    retry_includer->set_assigned_uniforms(all_assigned);
+    GlslangOutput retry_out = run_glslang(retry_source, retry.language, stage, *entry, options, *retry_includer);
+    if (!retry_out.ok && parse_info_log(retry_out.parse_log).size() >= parse_info_log(out.parse_log).size()) break;
+    cast_program = std::move(retry);
+    casts.insert(casts.end(), more.begin(), more.end());
+    assigned = std::move(all_assigned);
+    source = std::move(retry_source);
+    includer = std::move(retry_includer);
+    out = std::move(retry_out);
+  }
+  const ir::Program& compiled = cast_program ? *cast_program : program;
+  add_included_files(*includer, sources);
+  LogContext context{compiled, stage, shader.file, source, *includer, sources,
                      is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
   report_logs(out, context, diags);
+  if (out.ok) {
+    for (const CastCall& call : casts) {
+      diags.add(DiagId::hlsl_implicit_truncation, call.span,
+                fmt::format("implicit truncation of vector type in a call to '{}': an argument is wider than its "
+                            "parameter; each argument is converted to its parameter's type, as fxc does (X3206)",
+                            call.function));
+    }
+  }
   if (!out.ok) {
     if (diags.error_count() == errors_before) {
       diags.add(DiagId::backend_compile_error, program.body.span,
@@ -147,7 +255,7 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
   CompiledStage result;
   result.stage = stage;
   result.spirv = std::move(out.spirv);
-  result.included_files = included_paths(includer);
+  result.included_files = included_paths(*includer);
   if (!check_generated(result.spirv, is_hlsl(program), options.target, diags)) return failure("glslang bug");
   report_overlaps(fix_up_spirv(result.spirv, out.declared, stage, is_hlsl(program)), program, stage, diags);
   if (is_hlsl(program) && !legalize_hlsl(result.spirv, options.target, diags)) return failure("legalization failed");

@@ -5,6 +5,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <memory>
+#include <string_view>
 
 namespace facet::backend {
 namespace {
@@ -97,6 +98,49 @@ std::vector<DeclaredResource> declared_resources(const glslang::TIntermediate& i
   return out;
 }
 
+// The definition of HLSL entry function `entry` (glslang renames it
+// "@entry(" and wraps it), or nullptr.
+const glslang::TIntermAggregate* entry_definition(const glslang::TIntermediate& intermediate, const std::string& entry) {
+  const TIntermNode* root = intermediate.getTreeRoot();
+  const glslang::TIntermAggregate* aggregate = root ? root->getAsAggregate() : nullptr;
+  if (!aggregate) return nullptr;
+  for (const TIntermNode* node : aggregate->getSequence()) {
+    const glslang::TIntermAggregate* f = node->getAsAggregate();
+    if (!f || f->getOp() != glslang::EOpFunction) continue;
+    std::string_view name = f->getName().c_str();
+    if (name.starts_with("@")) name.remove_prefix(1);
+    if (name.starts_with(entry + "(")) return f;
+  }
+  return nullptr;
+}
+
+// The stage attribute a geometry, hull or domain entry point cannot do
+// without. glslang finds it missing only when linking, and says so without
+// a location; this says it at the entry function's line, in the parse log's
+// own form ("ERROR: FILE:LINE: 'TOKEN' : TEXT"), so that it maps to the
+// user's line like any other parse error.
+std::string missing_stage_attribute(const glslang::TIntermediate& intermediate, Stage stage, const std::string& entry) {
+  const char* attribute = nullptr;
+  const char* example = nullptr;
+  if (stage == Stage::geometry && intermediate.getVertices() == glslang::TQualifier::layoutNotSet) {
+    attribute = "maxvertexcount";
+    example = "[maxvertexcount(3)]";
+  } else if (stage == Stage::hull && intermediate.getVertices() == glslang::TQualifier::layoutNotSet) {
+    attribute = "outputcontrolpoints";
+    example = "[outputcontrolpoints(3)]";
+  } else if (stage == Stage::domain && intermediate.getInputPrimitive() == glslang::ElgNone) {
+    attribute = "domain";
+    example = "[domain(\"tri\")]";
+  }
+  if (!attribute) return {};
+  const glslang::TIntermAggregate* f = entry_definition(intermediate, entry);
+  if (!f) return {};
+  const glslang::TSourceLoc& loc = f->getLoc();
+  return "ERROR: " + loc.getStringNameOrNum(false) + ":" + std::to_string(loc.line) + ": '" + entry + "' : the " +
+         std::string(stage_name(stage)) + " function needs a [" + attribute + "(...)] attribute, e.g. " + example +
+         "\n";
+}
+
 }  // namespace
 
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
@@ -129,6 +173,13 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   bool parsed = shader.parse(GetDefaultResources(), default_version(language), false, messages, includer);
   out.parse_log = shader.getInfoLog();
   if (!parsed) return out;
+  if (is_hlsl(language)) {
+    std::string missing = missing_stage_attribute(*shader.getIntermediate(), stage, entry);
+    if (!missing.empty()) {
+      out.parse_log += missing;
+      return out;
+    }
+  }
   out.declared = declared_resources(*shader.getIntermediate());
 
   // The program must die before the shader it links (glslang's rule).

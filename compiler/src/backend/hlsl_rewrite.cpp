@@ -1,5 +1,6 @@
 #include "backend/hlsl_rewrite.h"
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -106,6 +107,55 @@ std::string rewrite_matrix_swizzles(std::string_view text) {
     i = word_end - 1;
   }
   out.append(text.substr(copied));
+  return out;
+}
+
+std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names) {
+  if (names.empty()) return std::string(text);
+  std::string out;
+  out.reserve(text.size());
+  int depth = 0;
+  size_t line_begin = 0;
+  while (line_begin <= text.size()) {
+    size_t line_end = text.find('\n', line_begin);
+    if (line_end == std::string_view::npos) line_end = text.size();
+    std::string_view line = text.substr(line_begin, line_end - line_begin);
+    std::string replaced;
+    if (depth == 0) {
+      // "[uniform] TYPE NAME;" alone on its line (a trailing comment is kept).
+      std::vector<std::string_view> words;
+      size_t i = 0, semicolon = std::string_view::npos;
+      while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        if (i < line.size() && line[i] == ';') {
+          semicolon = i;
+          break;
+        }
+        size_t w = i;
+        while (i < line.size() && is_ident(line[i])) ++i;
+        if (i == w) break;
+        words.push_back(line.substr(w, i - w));
+      }
+      bool rest_is_comment = semicolon != std::string_view::npos;
+      if (rest_is_comment) {
+        size_t after = line.find_first_not_of(" \t\r", semicolon + 1);
+        rest_is_comment = after == std::string_view::npos || line.substr(after, 2) == "//";
+      }
+      if (!words.empty() && words[0] == "uniform") words.erase(words.begin());
+      if (rest_is_comment && words.size() == 2 &&
+          std::find(names.begin(), names.end(), std::string(words[1])) != names.end()) {
+        std::string type(words[0]), name(words[1]), uniform = name + std::string(kAssignedUniformSuffix);
+        replaced = type + " " + uniform + "; static " + type + " " + name + " = " + uniform + ";" +
+                   std::string(line.substr(semicolon + 1));
+      }
+    }
+    out += replaced.empty() ? std::string(line) : replaced;
+    for (char c : line) depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+    if (depth < 0) depth = 0;
+    if (line_end == text.size()) break;
+    out += '\n';
+    line_begin = line_end + 1;
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace facet::backend {
 
@@ -13,5 +14,15 @@ namespace facet::backend {
 // m[2][3])". The matrix must be a name or a member/index chain
 // ("a.b[i]._11"); other text is unchanged. Comments and strings are skipped.
 std::string rewrite_matrix_swizzles(std::string_view text);
+
+// fxc lets a program assign to a global uniform (it writes a per-invocation
+// copy); glslang refuses. Each top-level declaration "TYPE NAME;" of one of
+// `names` becomes "TYPE NAME_facet_uniform; static TYPE NAME =
+// NAME_facet_uniform;" on the same line, so the program writes its copy and
+// the uniform keeps its place (reflection drops the suffix again).
+std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names);
+
+// The suffix rewrite_assigned_uniforms gives a uniform's declaration.
+inline constexpr std::string_view kAssignedUniformSuffix = "_facet_uniform";
 
 }  // namespace facet::backend

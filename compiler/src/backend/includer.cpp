@@ -64,7 +64,7 @@ glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path,
                                                                 const char* includer, bool system) {
   records_.push_back({path, includer ? includer : "", header, system});
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark: glslang rejects it
-  if (!is_glsl_file(path)) text = rewrite_matrix_swizzles(text);
+  if (!is_glsl_file(path)) text = rewrite_assigned_uniforms(rewrite_matrix_swizzles(text), assigned_uniforms_);
   texts_.emplace_back(std::move(path), std::move(text));
   const auto& [p, t] = texts_.back();
   return new IncludeResult(p, t.data(), t.size(), nullptr);

@@ -48,6 +48,9 @@ class FileIncluder final : public glslang::TShader::Includer {
   bool too_deep(const std::string& header) const;
   // Whether `header` was refused because its brackets nest too deeply.
   bool too_nested(const std::string& header) const;
+  // Global uniforms the program assigns to: their declarations in included
+  // files are rewritten (rewrite_assigned_uniforms).
+  void set_assigned_uniforms(std::vector<std::string> names) { assigned_uniforms_ = std::move(names); }
   // Where `#include <x>` looks, in order (for the "not found" note).
   std::vector<std::string> search_dirs(const std::string& includer) const;
 
@@ -59,6 +62,7 @@ class FileIncluder final : public glslang::TShader::Includer {
   std::string stdlib_dir_;
   std::vector<IncludeRecord> records_;
   std::vector<std::string> too_deep_, too_nested_;
+  std::vector<std::string> assigned_uniforms_;
   std::deque<std::pair<std::string, std::string>> texts_;  // path, text; stable addresses
 };
 

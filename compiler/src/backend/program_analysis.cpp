@@ -3,12 +3,14 @@
 #include "facet/program_analysis.h"
 
 #include <glslang/Include/intermediate.h>
+#include <memory>
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include <algorithm>
 #include <cctype>
 #include <set>
 
+#include "backend/argument_casts.h"
 #include "backend/glslang_frontend.h"
 #include "backend/includer.h"
 #include "backend/info_log.h"
@@ -206,17 +208,40 @@ Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Prog
                                         const std::vector<std::string>& keywords, const BackendOptions& options,
                                         SourceMap& sources, Diagnostics& diags) {
   std::string path = shader.file != kNoFile && shader.file < sources.file_count() ? sources.path(shader.file) : "";
-  AssembledSource source = assemble_source(program, Stage::fragment, keywords, options, path);
-  // Any entry point will do: nothing is linked, and the walk covers every function.
-  FileIncluder includer(options, options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir);
+  std::string stdlib = options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir;
   ProgramAnalysis analysis;
-  GlslangOutput out = parse_glslang(source, program.language, Stage::fragment, "facet_analysis_entry", options,
-                                    includer, [&](const glslang::TIntermediate& intermediate) {
-                                      Walker walker(analysis);
-                                      if (TIntermNode* root = intermediate.getTreeRoot()) root->traverse(&walker);
-                                    });
-  add_included_files(includer, sources);
-  LogContext context{program, Stage::fragment, shader.file, source, includer, sources, DiagId::hlsl_error};
+  auto parse = [&](const ir::Program& p, AssembledSource& source, FileIncluder& includer) {
+    source = assemble_source(p, Stage::fragment, keywords, options, path);
+    analysis = {};
+    // Any entry point will do: nothing is linked, and the walk covers every function.
+    return parse_glslang(source, p.language, Stage::fragment, "facet_analysis_entry", options, includer,
+                         [&](const glslang::TIntermediate& intermediate) {
+                           Walker walker(analysis);
+                           if (TIntermNode* root = intermediate.getTreeRoot()) root->traverse(&walker);
+                         });
+  };
+  AssembledSource source;
+  auto includer = std::make_unique<FileIncluder>(options, stdlib);
+  GlslangOutput out = parse(program, source, *includer);
+  // Calls fxc accepts by truncating a wider vector argument: analysed with
+  // the arguments cast, as Backend::compile compiles them (and warns there).
+  if (!out.ok && program.language != ir::ProgramLanguage::glsl) {
+    ir::Program cast = program;
+    if (!cast_rejected_calls(cast, source.root_name, parse_info_log(out.parse_log)).empty()) {
+      AssembledSource cast_source;
+      auto cast_includer = std::make_unique<FileIncluder>(options, stdlib);
+      GlslangOutput cast_out = parse(cast, cast_source, *cast_includer);
+      if (cast_out.ok) {
+        source = std::move(cast_source);
+        includer = std::move(cast_includer);
+        out = std::move(cast_out);
+      } else {
+        parse(program, source, *includer);  // the analysis of the program as written
+      }
+    }
+  }
+  add_included_files(*includer, sources);
+  LogContext context{program, Stage::fragment, shader.file, source, *includer, sources, DiagId::hlsl_error};
   report_info_log(out.parse_log, context, diags);
   if (!out.ok) return failure("the program does not parse");
   return analysis;

@@ -1,5 +1,7 @@
 #include "backend/reflect.h"
 
+#include "backend/hlsl_rewrite.h"
+
 #include <spirv_cross/spirv_cross.hpp>
 
 #include <algorithm>
@@ -56,6 +58,8 @@ BlockMember member_of(const Compiler& c, const SPIRType& st, uint32_t i, bool hl
   const SPIRType& mt = c.get_type(st.member_types[i]);
   BlockMember m;
   m.name = c.get_member_name(st.self, i);
+  // A uniform the program assigns to keeps its own name (hlsl_rewrite.h).
+  if (m.name.ends_with(kAssignedUniformSuffix)) m.name.resize(m.name.size() - kAssignedUniformSuffix.size());
   m.type = type_name(mt, hlsl);
   m.offset = c.type_struct_member_offset(st, i);
   m.array_dims = array_dims(c, mt);

@@ -88,6 +88,21 @@ class ProgramLowering {
                                                  " <function>' next to this one");
   }
 
+  // A hull stage needs a domain stage and the other way round (Unity's
+  // rule: tessellation runs between the two).
+  void check_tessellation_stages(const ast::ProgramBlock& block) {
+    if (program_.language == ir::ProgramLanguage::glsl || !program_.surface_function.empty()) return;
+    bool hull = program_.has_stage(Stage::hull), domain = program_.has_stage(Stage::domain);
+    if (hull == domain) return;
+    Stage missing = hull ? Stage::domain : Stage::hull;
+    Stage present = hull ? Stage::hull : Stage::domain;
+    ctx_.error(DiagId::sema_missing_stage, block.keyword_span,
+               "this program has a " + std::string(stage_name(present)) + " function but no " +
+                   std::string(stage_name(missing)) + " function")
+        .note(entry_spans_[size_t(present)], "add '#pragma " + std::string(stage_name(missing)) +
+                                                 " <function>' next to this one: tessellation needs both");
+  }
+
   // Unity raises the target for the stages that need it.
   void finish() {
     if (program_.has_stage(Stage::geometry)) program_.shader_target = std::max(program_.shader_target, 40);
@@ -221,6 +236,7 @@ ir::Program lower_program(const ast::ProgramBlock& block, const std::vector<cons
   if (program.language == ir::ProgramLanguage::glsl) find_glsl_stages(program, all);
   lowering.finish();
   lowering.check_stages(block);
+  lowering.check_tessellation_stages(block);
   return program;
 }
 

@@ -62,7 +62,8 @@ Result<Directive> parse_directive(const ir::Pragma& pragma, Diagnostics& diags) 
     std::string value;
     if (flag_option(arg, d)) continue;
     if (value_option(arg, "vertex", d.vertex_function) || value_option(arg, "finalcolor", d.final_color_function) ||
-        value_option(arg, "alphatest", d.alpha_test_property)) {
+        value_option(arg, "alphatest", d.alpha_test_property) ||
+        value_option(arg, "tessellate", d.tessellate_function) || value_option(arg, "tessphong", d.tess_phong)) {
       continue;
     }
     if (arg == "alpha" || value_option(arg, "alpha", value)) {
@@ -105,6 +106,16 @@ Result<Directive> parse_directive(const ir::Pragma& pragma, Diagnostics& diags) 
       diags.add(DiagId::surface_unknown_option, pragma.span, fmt::format("unknown surface shader option '{}' is ignored", arg));
     }
   }
+  if (!d.tess_phong.empty() && !d.tessellated()) {
+    diags.add(DiagId::surface_bad_directive, pragma.span,
+              fmt::format("'tessphong:{}' needs 'tessellate:<function>': Phong tessellation smooths the "
+                          "vertices that tessellation makes",
+                          d.tess_phong));
+    return failure("tessphong without tessellate");
+  }
+  // No instancing variants: the instance ID would have to pass through the
+  // hull and domain stages (docs/surface-shaders.md).
+  if (d.tessellated()) d.no_instancing = true;
   if (d.exclude_forward) {
     diags.add(DiagId::surface_bad_directive, pragma.span, "'exclude_path:forward' leaves no pass to render: facet has only the forward path");
     return failure("no path");

@@ -17,6 +17,9 @@ struct Directive {
   std::string surface_function;
   std::string model;  // "Standard", or a custom name: LightingModel
   std::string vertex_function, final_color_function;
+  // tessellate:fn (hull and domain stages) and tessphong:amount (a property
+  // name or a number, written into the domain stage as it is).
+  std::string tessellate_function, tess_phong;
   AlphaMode alpha = AlphaMode::none;
   std::string alpha_test_property;  // alphatest:_Cutoff
   DecalMode decal = DecalMode::none;
@@ -25,6 +28,7 @@ struct Directive {
   bool exclude_forward = false;
   SourceSpan span;
 
+  bool tessellated() const { return !tessellate_function.empty(); }
   bool physically_based() const { return model == "Standard" || model == "StandardSpecular"; }
 };
 

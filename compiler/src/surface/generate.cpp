@@ -153,6 +153,86 @@ class Writer {
     line("}");
   }
 
+  // tessellate: the vertex stage passes the vertex input on; the hull stage
+  // passes the control points through and its patch-constant function calls
+  // the user's tessellation function; the domain stage interpolates the
+  // vertex input barycentrically, applies Phong tessellation, and runs
+  // vert_surf (and so the vertex modifier) on the result, as Unity does.
+  void tessellation() {
+    const std::string& in = s_.vertex_input;
+    const std::string cp = "InternalTessInterp_" + in;
+    auto carried = [](const backend::AnalyzedField& f) { return !f.semantic.starts_with("SV_"); };
+    line("struct UnityTessellationFactors {");
+    line("  float edge[3] : SV_TessFactor;");
+    line("  float inside : SV_InsideTessFactor;");
+    line("};");
+    line(fmt::format("struct {} {{", cp));
+    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+      if (!carried(f)) continue;
+      // POSITION between stages would be the clip position; Unity's name.
+      bool position = f.semantic == "POSITION" || f.semantic.empty();
+      line(fmt::format("  {} {} : {};", f.type, f.name, position ? "INTERNALTESSPOS" : f.semantic));
+    }
+    line("};");
+    line(fmt::format("{} tessvert_surf({} v) {{", cp, in));
+    line(fmt::format("  {} o;", cp));
+    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+      if (carried(f)) line(fmt::format("  o.{0} = v.{0};", f.name));
+    }
+    line("  return o;");
+    line("}");
+    line(fmt::format("UnityTessellationFactors hsconst_surf(InputPatch<{}, 3> v) {{", cp));
+    line("  UnityTessellationFactors o;");
+    if (s_.tessellate_takes_vertices) {
+      line(fmt::format("  {} vi[3];", in));
+      line("  for (int i = 0; i < 3; ++i) {");
+      line(fmt::format("    UNITY_INITIALIZE_OUTPUT({}, vi[i]);", in));
+      for (const backend::AnalyzedField& f : s_.vertex_fields) {
+        if (carried(f)) line(fmt::format("    vi[i].{0} = v[i].{0};", f.name));
+      }
+      line("  }");
+      line(fmt::format("  float4 tf = {}(vi[0], vi[1], vi[2]);", d_.tessellate_function));
+    } else {
+      line(fmt::format("  float4 tf = {}();", d_.tessellate_function));
+    }
+    line("  o.edge[0] = tf.x;");
+    line("  o.edge[1] = tf.y;");
+    line("  o.edge[2] = tf.z;");
+    line("  o.inside = tf.w;");
+    line("  return o;");
+    line("}");
+    line("[UNITY_domain(\"tri\")]");
+    line("[UNITY_partitioning(\"fractional_odd\")]");
+    line("[UNITY_outputtopology(\"triangle_cw\")]");
+    line("[UNITY_patchconstantfunc(\"hsconst_surf\")]");
+    line("[UNITY_outputcontrolpoints(3)]");
+    line(fmt::format("{0} hs_surf(InputPatch<{0}, 3> v, uint id : SV_OutputControlPointID) {{", cp));
+    line("  return v[id];");
+    line("}");
+    line("[UNITY_domain(\"tri\")]");
+    line(fmt::format("v2f_surf ds_surf(UnityTessellationFactors tessFactors, const OutputPatch<{}, 3> vi, "
+                     "float3 bary : SV_DomainLocation) {{",
+                     cp));
+    line(fmt::format("  {} v;", in));
+    line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, v);", in));
+    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+      if (carried(f)) line(fmt::format("  v.{0} = vi[0].{0} * bary.x + vi[1].{0} * bary.y + vi[2].{0} * bary.z;", f.name));
+    }
+    if (!d_.tess_phong.empty()) {
+      // Each corner's tangent plane, the point projected onto it, blended.
+      line("  float3 pp[3];");
+      line("  for (int i = 0; i < 3; ++i) {");
+      line("    pp[i] = v.vertex.xyz - vi[i].normal * (dot(v.vertex.xyz, vi[i].normal) - dot(vi[i].vertex.xyz, "
+           "vi[i].normal));");
+      line("  }");
+      line(fmt::format("  v.vertex.xyz = ({0}) * (pp[0] * bary.x + pp[1] * bary.y + pp[2] * bary.z) + "
+                       "(1.0 - ({0})) * v.vertex.xyz;",
+                       d_.tess_phong));
+    }
+    line("  return vert_surf(v);");
+    line("}");
+  }
+
   void fill_input() {
     line(fmt::format("  {} surfIN;", s_.input_struct));
     line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, surfIN);", s_.input_struct));
@@ -314,6 +394,7 @@ GeneratedCode generate(GeneratedPass pass, const Directive& directive, const Sha
   }
   w.interpolators();
   w.vertex_function();
+  if (directive.tessellated() && pass != GeneratedPass::fallback_shadow_caster) w.tessellation();
   w.fragment_function();
   code.epilogue = w.take();
   return code;

@@ -42,7 +42,10 @@ GeneratedFile add_generated_file(const std::string& name, const GeneratedCode& c
 
 // The user's program with the generated code around it: prologue, the
 // CGINCLUDE chunks, the user's body, epilogue.
-ir::Program wrap(const ir::Program& user, const GeneratedFile& file, std::vector<ir::Pragma> pragmas) {
+// With `tessellated`, the vertex stage is tessvert_surf and hs_surf/ds_surf
+// are the hull and domain stages, at shader model 4.6 at least (as in Unity).
+ir::Program wrap(const ir::Program& user, const GeneratedFile& file, std::vector<ir::Pragma> pragmas,
+                 bool tessellated = false) {
   ir::Program p = user;
   p.surface_function.clear();
   p.includes.clear();
@@ -52,8 +55,13 @@ ir::Program wrap(const ir::Program& user, const GeneratedFile& file, std::vector
   p.body = file.epilogue;
   p.pragmas = std::move(pragmas);
   p.entry_points = {};
-  p.entry_points[size_t(Stage::vertex)] = "vert_surf";
+  p.entry_points[size_t(Stage::vertex)] = tessellated ? "tessvert_surf" : "vert_surf";
   p.entry_points[size_t(Stage::fragment)] = "frag_surf";
+  if (tessellated) {
+    p.entry_points[size_t(Stage::hull)] = "hs_surf";
+    p.entry_points[size_t(Stage::domain)] = "ds_surf";
+    p.shader_target = std::max(p.shader_target, 46);
+  }
   return p;
 }
 
@@ -62,12 +70,18 @@ ir::Pragma pragma(std::string name, std::vector<std::string> args, SourceSpan sp
 }
 
 // The user's keyword and target pragmas, then the pass's own.
-std::vector<ir::Pragma> pass_pragmas(const ir::Program& user, GeneratedPass pass, const Directive& d) {
+std::vector<ir::Pragma> pass_pragmas(const ir::Program& user, GeneratedPass pass, const Directive& d,
+                                     bool tessellated) {
   std::vector<ir::Pragma> out;
   for (const ir::Pragma& p : user.pragmas) {
-    if (p.name != "surface" && p.name != "vertex" && p.name != "fragment") out.push_back(p);
+    bool stage = p.name == "vertex" || p.name == "fragment" || p.name == "hull" || p.name == "domain";
+    if (p.name != "surface" && !stage) out.push_back(p);
   }
-  out.push_back(pragma("vertex", {"vert_surf"}, d.span));
+  out.push_back(pragma("vertex", {tessellated ? "tessvert_surf" : "vert_surf"}, d.span));
+  if (tessellated) {
+    out.push_back(pragma("hull", {"hs_surf"}, d.span));
+    out.push_back(pragma("domain", {"ds_surf"}, d.span));
+  }
   out.push_back(pragma("fragment", {"frag_surf"}, d.span));
   std::vector<std::string> shadow_modifier;
   if (d.no_shadow) shadow_modifier.push_back("noshadow");
@@ -191,7 +205,9 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
     pass.name = info.name;
     pass.tags.push_back({"LightMode", info.light_mode, directive->span});
     pass.state = pass_state(sub, info.kind, *directive);
-    pass.program = wrap(user, file, pass_pragmas(user, info.kind, *directive));
+    // The Fallback's shadow caster is Legacy VertexLit's: not tessellated.
+    bool tessellated = directive->tessellated() && info.kind != GeneratedPass::fallback_shadow_caster;
+    pass.program = wrap(user, file, pass_pragmas(user, info.kind, *directive, tessellated), tessellated);
     pass.span = user.body.span;
     out.push_back(std::move(pass));
   }

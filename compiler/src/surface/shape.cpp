@@ -89,6 +89,15 @@ bool read_vertex_modifier(const backend::ProgramAnalysis& analysis, const Direct
   const backend::AnalyzedFunction* f = require(analysis, d.vertex_function, "the vertex modifier", d, diags);
   if (!f) return false;
   const auto& p = f->params;
+  if (d.tessellated() && (p.size() != 1 || !p[0].is_struct || !p[0].is_out)) {
+    // It runs in the domain stage, on each vertex that tessellation makes.
+    return signature_error(d, diags,
+                           fmt::format("with 'tessellate:', vertex modifier '{}' must take only 'inout appdata v'",
+                                       d.vertex_function),
+                           fmt::format("write 'void {}(inout appdata v)': with tessellation it runs in the domain "
+                                       "stage and cannot fill '{}'",
+                                       d.vertex_function, s.input_struct));
+  }
   if (p.empty() || p.size() > 2 || !p[0].is_struct || (p.size() == 2 && p[1].type != s.input_struct)) {
     return signature_error(d, diags, fmt::format("vertex modifier '{}' has the wrong parameters", d.vertex_function),
                            fmt::format("write 'void {}(inout appdata_full v)' or 'void {}(inout appdata_full v, out {} o)'",
@@ -96,6 +105,67 @@ bool read_vertex_modifier(const backend::ProgramAnalysis& analysis, const Direct
   }
   s.vertex_input = p[0].type;
   s.vertex_fills_input = p.size() == 2;
+  return true;
+}
+
+// appdata_full's members, for a tessellated shader whose code names the
+// struct in no function (no vertex modifier, a tessellate function without
+// parameters).
+std::vector<backend::AnalyzedField> appdata_full_fields() {
+  return {{"vertex", "float4", "POSITION"},   {"tangent", "float4", "TANGENT"},
+          {"normal", "float3", "NORMAL"},     {"texcoord", "float4", "TEXCOORD0"},
+          {"texcoord1", "float4", "TEXCOORD1"}, {"texcoord2", "float4", "TEXCOORD2"},
+          {"texcoord3", "float4", "TEXCOORD3"}, {"color", "float4", "COLOR"}};
+}
+
+bool has_field(const std::vector<backend::AnalyzedField>& fields, std::string_view name) {
+  for (const backend::AnalyzedField& f : fields) {
+    if (f.name == name) return true;
+  }
+  return false;
+}
+
+// tessellate:fn is `float4 fn()` (fixed factors) or `float4 fn(appdata v0,
+// appdata v1, appdata v2)`, appdata being the vertex modifier's struct (or,
+// without one, the vertex input); it may return a single float for all four.
+bool read_tessellation(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+  if (!d.tessellated()) return true;
+  const backend::AnalyzedFunction* f = require(analysis, d.tessellate_function, "the tessellation function", d, diags);
+  if (!f) return false;
+  const auto& p = f->params;
+  auto expected = [&] {
+    return fmt::format("write 'float4 {}()' or 'float4 {}({} v0, {} v1, {} v2)': edge factors in xyz, the inside "
+                       "factor in w",
+                       d.tessellate_function, d.tessellate_function, s.vertex_input, s.vertex_input, s.vertex_input);
+  };
+  bool vertices = p.size() == 3 && p[0].is_struct && p[1].type == p[0].type && p[2].type == p[0].type;
+  if (vertices && d.vertex_function.empty()) s.vertex_input = p[0].type;
+  if (!p.empty() && !(vertices && p[0].type == s.vertex_input)) {
+    return signature_error(d, diags,
+                           fmt::format("tessellation function '{}' has the wrong parameters", d.tessellate_function),
+                           expected());
+  }
+  std::string_view ret = f->return_type;
+  if (ret != "float4" && ret != "float") {
+    return signature_error(d, diags,
+                           fmt::format("tessellation function '{}' returns '{}'", d.tessellate_function, f->return_type),
+                           expected());
+  }
+  s.tessellate_takes_vertices = vertices;
+  if (const auto* fields = analysis.find_struct(s.vertex_input)) s.vertex_fields = *fields;
+  else if (s.vertex_input == "appdata_full") s.vertex_fields = appdata_full_fields();
+  if (!has_field(s.vertex_fields, "vertex")) {
+    diags.add(DiagId::surface_bad_signature, d.span,
+              fmt::format("'{}' has no 'vertex' member for tessellation to interpolate", s.vertex_input))
+        .note({}, "the vertex input needs 'float4 vertex : POSITION;'");
+    return false;
+  }
+  if (!d.tess_phong.empty() && !has_field(s.vertex_fields, "normal")) {
+    diags.add(DiagId::surface_bad_signature, d.span,
+              fmt::format("'tessphong:' needs a 'normal' member in '{}'", s.vertex_input))
+        .note({}, "Phong tessellation projects onto the vertices' tangent planes: add 'float3 normal : NORMAL;'");
+    return false;
+  }
   return true;
 }
 
@@ -135,7 +205,10 @@ Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directi
   if (const auto* fields = analysis.find_struct(s.output_struct)) {
     for (const backend::AnalyzedField& f : *fields) s.output_has_occlusion = s.output_has_occlusion || f.name == "Occlusion";
   }
-  if (!read_lighting(analysis, d, s, diags) || !read_vertex_modifier(analysis, d, s, diags)) return failure("bad functions");
+  if (!read_lighting(analysis, d, s, diags) || !read_vertex_modifier(analysis, d, s, diags) ||
+      !read_tessellation(analysis, d, s, diags)) {
+    return failure("bad functions");
+  }
   return s;
 }
 

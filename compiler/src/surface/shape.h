@@ -45,6 +45,10 @@ struct Shape {
   std::string vertex_input = "appdata_full";  // the vertex modifier's struct
   bool vertex_fills_input = false;             // vert(inout appdata v, out Input o)
   bool output_has_occlusion = false;
+  // tessellate:fn: the vertex input's members (what the hull and domain
+  // stages carry) and whether fn takes the patch's three vertices.
+  std::vector<backend::AnalyzedField> vertex_fields;
+  bool tessellate_takes_vertices = false;
 };
 
 Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directive& directive, Diagnostics& diags);

@@ -4,8 +4,13 @@
 // failure names the missing ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <regex>
 #include <set>
+#include <sstream>
 
 #include "stdlib_compile.h"
 
@@ -234,6 +239,177 @@ ENDCG
 } } })";
     auto compiled = compile_text(inc, text);
     EXPECT_TRUE(compiled.ok) << inc << "\n" << compiled.log;
+  }
+}
+
+// ---- identifier hygiene -----------------------------------------------------
+// A user keyword or `#define` may use any all-uppercase name (C, N, IN, OUT,
+// F0, ...), so no stdlib identifier may be one: `float C` in a stdlib
+// function breaks every program that defines C. The names are collected from
+// the stdlib's HLSL text (.cginc/.hlsl; the .glslinc files are GLSL): every
+// all-uppercase token in code or in a #define body, except
+//   - macros the stdlib #defines (Unity's API: UNITY_*, SHADOWS_*, ...),
+//   - names the stdlib tests with #if/#ifdef/defined(): keywords and
+//     switches a program is meant to define (_NORMALMAP, POINT, ...),
+//   - macro parameters, operands of ##, and HLSL semantics (after ':', or
+//     POSITION/TEXCOORD/VPOS-like names),
+//   - the back end's prelude macros and a few Unity API spellings below.
+// Then every include file is compiled with `#define NAME 1` for each.
+struct StdlibText {
+  std::string file;
+  std::string text;  // comments removed, line continuations joined
+};
+
+// Comments removed (a block comment becomes a space), line continuations joined.
+std::string strip_comments(const std::string& raw) {
+  std::string text;
+  for (size_t i = 0; i < raw.size();) {
+    if (raw.compare(i, 2, "//") == 0) {
+      while (i < raw.size() && raw[i] != '\n') ++i;
+    } else if (raw.compare(i, 2, "/*") == 0) {
+      size_t end = raw.find("*/", i + 2);
+      i = end == std::string::npos ? raw.size() : end + 2;
+      text += ' ';
+    } else if (raw[i] == '\\' && i + 1 < raw.size() && (raw[i + 1] == '\n' || raw.compare(i + 1, 2, "\r\n") == 0)) {
+      i += raw[i + 1] == '\n' ? 2 : 3;
+      text += ' ';
+    } else {
+      text += raw[i++];
+    }
+  }
+  return text;
+}
+
+std::vector<StdlibText> stdlib_hlsl_files() {
+  namespace fs = std::filesystem;
+  std::vector<StdlibText> out;
+  for (const auto& e : fs::directory_iterator(fs::path(FACET_SOURCE_DIR) / "stdlib")) {
+    const std::string ext = e.path().extension().string();
+    if (!e.is_regular_file() || (ext != ".cginc" && ext != ".hlsl")) continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = strip_comments(ss.str());
+    out.push_back({e.path().filename().string(), text});
+  }
+  std::sort(out.begin(), out.end(), [](const StdlibText& a, const StdlibText& b) { return a.file < b.file; });
+  return out;
+}
+
+bool all_upper(const std::string& t) {
+  if (t.empty() || !(t[0] == '_' || (t[0] >= 'A' && t[0] <= 'Z'))) return false;
+  bool letter = false;
+  for (char c : t) {
+    if (c >= 'A' && c <= 'Z') letter = true;
+    else if (!(c == '_' || (c >= '0' && c <= '9'))) return false;
+  }
+  return letter;
+}
+
+// name -> the files that use it.
+std::map<std::string, std::set<std::string>> user_definable_stdlib_names(const std::vector<StdlibText>& files) {
+  const std::regex token(R"([0-9][\w.]*|[A-Za-z_]\w*|##|[^\s])");
+  const std::regex word(R"(\w+)");
+  const std::regex define(R"(^\s*#\s*define\s+(\w+)(\([^)]*\))?(.*)$)");
+  const std::regex conditional(R"(^\s*#\s*(if|ifdef|ifndef|elif)\b(.*)$)");
+  const std::regex semantic("(SV_\\w+|POSITION|NORMAL|TANGENT|BINORMAL|COLOR|TEXCOORD|BLENDWEIGHT|BLENDINDICES|"
+                            "PSIZE|FOG|DEPTH|VPOS|VFACE|WPOS)[0-9]*");
+  // The back end's prelude (docs/stdlib.md §1) and Unity API names that are
+  // all-uppercase by Unity's choice.
+  const std::set<std::string> api = {"SHADER_TARGET", "UNITY_VERSION", "UNITY_COMPILER_HLSL", "UNITY_COMPILER_HLSLCC",
+                                     "_AO" /* the 2.x tree material's ambient-occlusion property */};
+  std::set<std::string> defined, tested;
+  std::map<std::string, std::set<std::string>> used;
+  for (const StdlibText& f : files) {
+    std::istringstream lines(f.text);
+    std::string line;
+    while (std::getline(lines, line)) {
+      std::smatch m;
+      std::string code;
+      std::set<std::string> params;
+      if (std::regex_match(line, m, define)) {
+        defined.insert(m[1].str());
+        std::string p = m[2].str();
+        for (std::sregex_iterator it(p.begin(), p.end(), word), end; it != end; ++it)
+          params.insert(it->str());
+        code = m[3].str();
+      } else if (std::regex_match(line, m, conditional)) {
+        std::string cond = m[2].str();
+        for (std::sregex_iterator it(cond.begin(), cond.end(), token), end; it != end; ++it)
+          if (all_upper(it->str())) tested.insert(it->str());
+        continue;
+      } else if (line.find_first_not_of(" \t") != std::string::npos && line[line.find_first_not_of(" \t")] == '#') {
+        continue;  // #include, #pragma, #endif, #else, #undef, #error
+      } else {
+        code = line;
+      }
+      std::vector<std::string> toks;
+      for (std::sregex_iterator it(code.begin(), code.end(), token), end; it != end; ++it) toks.push_back(it->str());
+      for (size_t k = 0; k < toks.size(); ++k) {
+        const std::string& t = toks[k];
+        if (!all_upper(t) || params.count(t) || std::regex_match(t, semantic)) continue;
+        if ((k > 0 && (toks[k - 1] == ":" || toks[k - 1] == "##")) || (k + 1 < toks.size() && toks[k + 1] == "##"))
+          continue;
+        used[t].insert(f.file);
+      }
+    }
+  }
+  for (auto it = used.begin(); it != used.end();) {
+    const std::string& n = it->first;
+    bool excluded = defined.count(n) || tested.count(n) || api.count(n) || n.rfind("SHADER_API_", 0) == 0 ||
+                    n.rfind("SHADER_STAGE_", 0) == 0;
+    it = excluded ? used.erase(it) : std::next(it);
+  }
+  return used;
+}
+
+TEST(StdlibNamesTest, ScannerFindsAllUppercaseIdentifiers) {
+  const std::vector<StdlibText> probe = {
+      {"probe.hlsl", strip_comments("#define UNITY_THING(X) X\n#ifdef MY_KEYWORD\n#endif\n"
+                     "float Shade(float3 N, float3 L) { float C = dot(N, L); float F0 = 0.04; /* float Q; */\n"
+                     "  return C + F0 + UNITY_THING(1) + MY_KEYWORD; } // float R;\n"
+                     "struct v { float4 p : POSITION; float4 c : COLOR0; float2 uv : TEXCOORD##1; };\n")}};
+  std::map<std::string, std::set<std::string>> names = user_definable_stdlib_names(probe);
+  std::set<std::string> found;
+  for (const auto& [n, f] : names) found.insert(n);
+  EXPECT_EQ(found, (std::set<std::string>{"C", "F0", "L", "N"}));
+}
+
+TEST(StdlibNamesTest, NoStdlibIdentifierIsANameAUserCouldDefineAway) {
+  const std::vector<StdlibText> files = stdlib_hlsl_files();
+  ASSERT_GT(files.size(), 50u);
+  const std::map<std::string, std::set<std::string>> names = user_definable_stdlib_names(files);
+  // Any such name is a bug in itself; name the files before compiling.
+  for (const auto& [name, where] : names) {
+    std::string list;
+    for (const std::string& f : where) list += " " + f;
+    ADD_FAILURE() << "stdlib identifier '" << name << "' is all-uppercase (a user #define breaks it):" << list;
+  }
+  // What a file needs before it that Unity's users always include.
+  const std::map<std::string, std::string> before = {{"TerrainSplatmapCommon.cginc", "Lighting.cginc"}};
+  // Every all-uppercase name the stdlib uses that is no macro of its own: a
+  // program defining all of them must still compile each include file.
+  std::set<std::string> hostile = {"C", "N", "L", "V", "H", "IN", "OUT", "F0", "R", "T", "B", "D", "G", "P", "X", "Y", "Z"};
+  for (const auto& [name, where] : names) hostile.insert(name);
+  CompileOptions options;
+  options.keywords = std::vector<std::string>{};
+  for (const std::string& n : hostile) options.backend.defines.push_back({n, "1"});
+  for (const StdlibText& f : files) {
+    std::string pre;
+    if (auto it = before.find(f.file); it != before.end()) pre = "#include \"" + it->second + "\"\n";
+    std::string text = R"(Shader "Test/Hygiene" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex hygiene_vert
+#pragma fragment hygiene_frag
+#pragma target 3.0
+)" + pre + "#include \"" + f.file + R"("
+float4 hygiene_vert(float4 p : POSITION) : SV_POSITION { return p; }
+float4 hygiene_frag() : SV_Target { return 1; }
+ENDCG
+} } })";
+    auto compiled = compile_text(f.file + ".shader", text, options);
+    EXPECT_TRUE(compiled.ok) << f.file << " does not compile with `#define NAME 1` for every all-uppercase name\n"
+                             << compiled.log;
   }
 }
 

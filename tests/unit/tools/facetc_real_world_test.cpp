@@ -90,3 +90,45 @@ ENDCG
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+std::string truncation_shader(const std::string& functions, const std::string& call) {
+  return "Shader \"T\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\nfloat4 _C;\n" +
+         functions + "\nfloat4 vert(float4 v : POSITION) : SV_Position { return v; }\n" +
+         "float4 frag() : SV_Target {\n  float x = " + call + ";\n  return x;\n}\nENDCG\n} } }\n";
+}
+
+// fxc truncates a float4 argument to a float parameter (warning X3206);
+// facet does the same, with a warning at the call.
+TEST_F(FacetcTest, AWiderVectorArgumentIsTruncatedWithALocatedWarning) {
+  write_all(dir_ / "t.shader", truncation_shader("float spec(float n, float f0) { return n * f0; }", "spec(0.5, _C)"));
+  FacetcRun run = facetc({"t.shader", "-o", "t.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("t.shader:9:13: warning: implicit truncation of vector type in a call to 'spec'"));
+  EXPECT_THAT(run.err, HasSubstr("[-Wimplicit-truncation]"));
+  FacetcRun werror = facetc({"t.shader", "-Werror", "-o", "w.facetpkg"});
+  EXPECT_EQ(werror.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "w.facetpkg"));
+}
+
+TEST_F(FacetcTest, TruncationIsNotGuessedBetweenOverloadsOfOneArity) {
+  write_all(dir_ / "t.shader", truncation_shader("float spec(float n, float f0) { return n * f0; }\n"
+                                                 "float spec(float2 n, float f0) { return n.x * f0; }",
+                                                 "spec(0.5, _C)"));
+  FacetcRun run = facetc({"t.shader", "-o", "t.facetpkg"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("t.shader:10:13: error: 'spec': no matching overloaded function found"));
+}
+
+TEST_F(FacetcTest, AnOutArgumentIsNeverCast) {
+  write_all(dir_ / "t.shader", truncation_shader("float get(out float r) { r = 1; return r; }", "get(_C)"));
+  FacetcRun run = facetc({"t.shader", "-o", "t.facetpkg"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("error:"));
+  EXPECT_FALSE(fs::exists(dir_ / "t.facetpkg"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing

@@ -1,0 +1,30 @@
+// fxc truncates a vector argument wider than its parameter (warning X3206);
+// glslang finds no overload instead. For each call glslang rejected this
+// way, the program text gets explicit casts of the arguments to the
+// parameter types of the function's definition, and the compile is tried
+// again. Internal to the backend stage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "backend/info_log.h"
+#include "facet/ir.h"
+
+namespace facet::backend {
+
+struct CastCall {
+  std::string function;
+  SourceSpan span;  // the function name at the call, in the .shader file
+};
+
+// Rewrites, in `program`'s chunks that `root_name` names, the calls that
+// `messages` reports as "no matching overloaded function found" for a
+// function the program defines with one definition of the call's arity:
+// every scalar or vector argument of an `in` parameter becomes
+// "(type)(argument)". Lines keep their breaks, so #line mapping still holds.
+// Returns the calls rewritten (none: nothing to retry).
+std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::string& root_name,
+                                          const std::vector<LogMessage>& messages);
+
+}  // namespace facet::backend
