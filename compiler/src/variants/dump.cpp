@@ -49,9 +49,10 @@ void dump_sets(const KeywordSpace& space, std::string& out) {
   out += "dynamic_branch: " + joined_or_none(space.dynamic_branch_keywords) + "\n";
   out += "skip_variants: " + joined_or_none(space.skip_variants) + "\n";
   for (const KeywordCombinations& group : space.combinations) {
-    out += "combinations: " + group.pragma + " lists " + std::to_string(group.choices.size()) +
-           " combinations of sets #" + std::to_string(group.sets.front()) + "-#" + std::to_string(group.sets.back()) +
-           " (Unity's list)\n";
+    std::string sets;
+    for (size_t s : group.sets) sets += (sets.empty() ? "#" : " #") + std::to_string(s);
+    out += "combinations: " + group.pragma + " allows " + std::to_string(group.choices.size()) +
+           " combinations of sets " + sets + "\n";
   }
   if (!space.unreachable_keywords.empty()) {
     out += "unreachable: " + joined_or_none(space.unreachable_keywords) +

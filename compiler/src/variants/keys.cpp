@@ -1,4 +1,6 @@
 // Reading keywords out of variant keys.
+#include <algorithm>
+
 #include "facet/variants.h"
 
 namespace facet::variants {
@@ -36,7 +38,9 @@ std::vector<std::string> all_keywords(const KeywordSpace& space, const VariantKe
   std::vector<std::string> keywords;
   for (size_t s = 0; s < space.sets.size(); ++s) {
     const std::string& keyword = chosen_keyword(space, key, s);
-    if (!keyword.empty()) keywords.push_back(keyword);
+    // A keyword that sets of different stages share is listed once.
+    bool listed = std::find(keywords.begin(), keywords.end(), keyword) != keywords.end();
+    if (!keyword.empty() && !listed) keywords.push_back(keyword);
   }
   return keywords;
 }

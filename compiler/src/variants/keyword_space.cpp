@@ -138,6 +138,8 @@ class SpaceBuilder {
   struct Declaration {
     SourceSpan span;
     bool dynamic = false;
+    StageMask stages = kAllStages;
+    size_t set = SIZE_MAX;  // index of the set that declared it
   };
 
   void add_keyword_pragma(const ir::Pragma& pragma, const DirectiveForm& form);
@@ -148,13 +150,15 @@ class SpaceBuilder {
   void add_keyword_rule(const ir::Pragma& pragma);
   void report_unknown_directive(const ir::Pragma& pragma);
   std::optional<std::vector<std::string>> read_keywords(const ir::Pragma& pragma);
-  bool claim(const std::string& keyword, SourceSpan span, bool dynamic);
+  bool claim(const std::string& keyword, SourceSpan span, bool dynamic, StageMask stages = kAllStages);
+  void tie_shared_keywords(size_t set, const std::vector<std::pair<std::string, size_t>>& shared);
   void add_set(KeywordSet set);
 
   Diagnostics& diags_;
   KeywordSpace space_;
   std::map<std::string, Declaration> declared_;  // keyword -> its first pragma
   std::map<std::string, SourceSpan> skip_spans_;  // skip_variants keyword -> its pragma
+  std::vector<std::pair<std::string, size_t>> shared_;  // of the set being added: keyword, earlier set
 };
 
 void SpaceBuilder::add(const ir::Pragma& pragma) {
@@ -346,9 +350,22 @@ void SpaceBuilder::report_unknown_directive(const ir::Pragma& pragma) {
 
 // Records the first declaration of `keyword`; a second one is an error with
 // a note at the first, and the caller drops the keyword.
-bool SpaceBuilder::claim(const std::string& keyword, SourceSpan span, bool dynamic) {
-  auto [it, inserted] = declared_.emplace(keyword, Declaration{span, dynamic});
+bool SpaceBuilder::claim(const std::string& keyword, SourceSpan span, bool dynamic, StageMask stages) {
+  auto [it, inserted] = declared_.emplace(keyword, Declaration{span, dynamic, stages, space_.sets.size()});
   if (inserted) return true;
+  // Sets of different stages may share a keyword (Unity's SpeedTree:
+  // `multi_compile_vertex __ LOD_FADE_PERCENTAGE LOD_FADE_CROSSFADE` and
+  // `multi_compile_fragment __ LOD_FADE_CROSSFADE`): no stage sees it twice,
+  // and add_set ties the two sets so the keyword is on in both or neither.
+  const Declaration& d = it->second;
+  bool disjoint = !dynamic && !d.dynamic && (d.stages & stages) == 0 && d.set < space_.sets.size();
+  bool tied_already = std::any_of(space_.combinations.begin(), space_.combinations.end(), [&](const auto& g) {
+    return std::find(g.sets.begin(), g.sets.end(), d.set) != g.sets.end();
+  });
+  if (disjoint && !tied_already) {
+    shared_.emplace_back(keyword, d.set);
+    return true;
+  }
   SourceSpan first = it->second.span;
   diags_.add(DiagId::pragma_keyword_in_two_sets, span,
              "keyword '" + keyword + "' is already declared by another keyword pragma; a keyword belongs to one set")
@@ -380,9 +397,31 @@ void SpaceBuilder::add_set(KeywordSet set) {
         .note(same->span, "the same keywords are declared here");
     return;
   }
-  std::erase_if(set.keywords, [&](const std::string& k) { return !k.empty() && !claim(k, set.span, false); });
+  shared_.clear();
+  std::erase_if(set.keywords,
+                [&](const std::string& k) { return !k.empty() && !claim(k, set.span, false, set.stages); });
   bool any = std::any_of(set.keywords.begin(), set.keywords.end(), [](const std::string& k) { return !k.empty(); });
-  if (any) space_.sets.push_back(std::move(set));
+  if (!any) return;
+  space_.sets.push_back(std::move(set));
+  if (!shared_.empty()) tie_shared_keywords(space_.sets.size() - 1, shared_);
+}
+
+// The combinations of the new set `set` and the earlier set holding the same
+// keywords in which each shared keyword is on in both or in neither.
+void SpaceBuilder::tie_shared_keywords(size_t set, const std::vector<std::pair<std::string, size_t>>& shared) {
+  size_t earlier = shared.front().second;
+  const KeywordSet& a = space_.sets[earlier];
+  const KeywordSet& b = space_.sets[set];
+  KeywordCombinations group{{earlier, set}, {}, b.pragma, b.span};
+  for (uint32_t i = 0; i < a.keywords.size(); ++i) {
+    for (uint32_t j = 0; j < b.keywords.size(); ++j) {
+      bool agree = std::all_of(shared.begin(), shared.end(), [&](const auto& s) {
+        return s.second != earlier || (a.keywords[i] == s.first) == (b.keywords[j] == s.first);
+      });
+      if (agree) group.choices.push_back({i, j});
+    }
+  }
+  space_.combinations.push_back(std::move(group));
 }
 
 KeywordSpace SpaceBuilder::finish() {

@@ -202,3 +202,49 @@ TEST(ShortcutSetsTest, ShortcutCombinesFreelyWithOtherSets) {
 
 }  // namespace
 }  // namespace facet::variants
+
+namespace facet::variants {
+namespace {
+
+// Unity's SpeedTree shaders declare LOD_FADE_CROSSFADE for the vertex and
+// for the fragment stage: the keyword is on in both stages or in neither.
+TEST(SharedStageKeywordTest, SetsOfDifferentStagesMayShareAKeyword) {
+  ir::Program program;
+  for (std::vector<std::string> words : {std::vector<std::string>{"multi_compile_vertex", "__", "LOD_FADE_PERCENTAGE",
+                                                                  "LOD_FADE_CROSSFADE"},
+                                         std::vector<std::string>{"multi_compile_fragment", "__", "LOD_FADE_CROSSFADE"}}) {
+    ir::Pragma pragma;
+    pragma.name = words[0];
+    pragma.args.assign(words.begin() + 1, words.end());
+    program.pragmas.push_back(pragma);
+  }
+  Diagnostics diags;
+  auto space = build_keyword_space(program, diags);
+  ASSERT_TRUE(space.has_value());
+  EXPECT_FALSE(diags.has_errors());
+  // Variants: none, PERCENTAGE, CROSSFADE (in both stages).
+  EXPECT_EQ(count_variants(*space).full, BigCount(3));
+  EXPECT_EQ(count_variants(*space, {.stage = Stage::vertex}).full, BigCount(3));
+  EXPECT_EQ(count_variants(*space, {.stage = Stage::fragment}).full, BigCount(2));
+  std::set<Keywords> all = variants_of(*space);
+  EXPECT_EQ(all, (std::set<Keywords>{{}, {"LOD_FADE_PERCENTAGE"}, {"LOD_FADE_CROSSFADE"}}));
+  auto pick = select_variant(*space, {"LOD_FADE_CROSSFADE"}, {}, {.strict = true}, diags);
+  ASSERT_TRUE(pick.has_value());
+  EXPECT_EQ(stage_keywords(*space, pick->key, Stage::fragment), (Keywords{"LOD_FADE_CROSSFADE"}));
+  EXPECT_EQ(stage_keywords(*space, pick->key, Stage::vertex), (Keywords{"LOD_FADE_CROSSFADE"}));
+}
+
+TEST(SharedStageKeywordTest, SetsOfOneStageStillMayNotShareAKeyword) {
+  ir::Program program;
+  for (const char* name : {"multi_compile_vertex", "multi_compile"}) {
+    ir::Pragma pragma;
+    pragma.name = name;
+    pragma.args = {"_", "A"};
+    program.pragmas.push_back(pragma);
+  }
+  Diagnostics diags;
+  EXPECT_FALSE(build_keyword_space(program, diags).has_value());
+}
+
+}  // namespace
+}  // namespace facet::variants
