@@ -215,4 +215,42 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
   return out;
 }
 
+std::vector<CastCall> cast_rejected_calls_in_includes(std::map<std::string, std::string>& texts,
+                                                      const std::map<std::string, std::string>& current,
+                                                      const ir::Program& program,
+                                                      const std::vector<LogMessage>& messages,
+                                                      const SourceMap& sources) {
+  std::vector<CastCall> out;
+  std::set<std::pair<std::string, uint32_t>> done;
+  for (const LogMessage& m : messages) {
+    if (m.severity != Severity::error || m.token.empty() || m.text.find(kNoOverload) == std::string::npos) continue;
+    auto source = current.find(m.file);
+    std::optional<FileId> id = sources.find(m.file);
+    if (source == current.end() || !id || !done.insert({m.token, m.line}).second) continue;
+    if (!texts.count(m.file)) texts[m.file] = source->second;
+    // Definitions: in the program's chunks and every included file.
+    std::vector<ir::SourceChunk> files;
+    for (const auto& [path, text] : current) files.push_back({texts.count(path) ? texts[path] : text, {}, 1, path});
+    std::vector<const ir::SourceChunk*> scope;
+    for (const ir::SourceChunk& c : program.includes) scope.push_back(&c);
+    scope.push_back(&program.body);
+    for (const ir::SourceChunk& f : files) scope.push_back(&f);
+    auto definitions = definitions_of(scope, m.token);
+    if (definitions.empty()) continue;
+    std::string& text = texts[m.file];
+    const std::string& original = sources.text(*id);
+    size_t from = line_start(text, m.line - 1), original_from = line_start(original, m.line - 1);
+    if (from == std::string::npos || original_from == std::string::npos) continue;
+    std::vector<size_t> written = calls_on_line(original, original_from, m.token);
+    std::vector<size_t> ordinals = cast_calls_on_line(text, from, m.token, definitions);
+    std::sort(ordinals.begin(), ordinals.end());
+    for (size_t ordinal : ordinals) {
+      if (ordinal >= written.size()) continue;
+      uint32_t begin = uint32_t(written[ordinal]);
+      out.push_back({m.token, SourceSpan{*id, begin, uint32_t(begin + m.token.size())}});
+    }
+  }
+  return out;
+}
+
 }  // namespace facet::backend

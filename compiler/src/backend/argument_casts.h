@@ -5,6 +5,7 @@
 // again. Internal to the backend stage.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,15 @@ struct CastCall {
 // Returns the calls rewritten (none: nothing to retry).
 std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::string& root_name,
                                           const std::vector<LogMessage>& messages);
+
+// The same for calls in included files: `texts` holds each file's text by
+// the path glslang names (edited in place; a file not yet in it is read
+// from `current`); definitions are looked up in those texts and `program`.
+// Spans point into `sources`, which must hold the files as written.
+std::vector<CastCall> cast_rejected_calls_in_includes(std::map<std::string, std::string>& texts,
+                                                      const std::map<std::string, std::string>& current,
+                                                      const ir::Program& program,
+                                                      const std::vector<LogMessage>& messages,
+                                                      const SourceMap& sources);
 
 }  // namespace facet::backend

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -190,6 +191,24 @@ std::vector<std::string> assigned_uniforms(const std::vector<LogMessage>& messag
   return out;
 }
 
+// True when none of the errors of `before` that the rewrites address (no
+// overload, a modified uniform) is reported again, at the same place, in
+// `after`; errors that only followed from them (glslang goes on after the
+// first error and trips over later lines) may recur.
+bool fixed_errors(const std::vector<LogMessage>& before, const std::vector<LogMessage>& after) {
+  auto addressed = [](const LogMessage& m) {
+    return m.severity == Severity::error && (m.text.find("no matching overloaded function found") != std::string::npos ||
+                                             m.text.find("can't modify a uniform") != std::string::npos);
+  };
+  for (const LogMessage& a : after) {
+    if (!addressed(a)) continue;
+    for (const LogMessage& b : before) {
+      if (addressed(b) && b.file == a.file && b.line == a.line && b.text == a.text) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
@@ -209,11 +228,18 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
   std::optional<ir::Program> cast_program;
   std::vector<CastCall> casts;
   std::vector<std::string> assigned;
+  std::map<std::string, std::string> overrides;  // included files whose calls got casts
   for (int attempt = 0; attempt < 4 && !out.ok && is_hlsl(program); ++attempt) {
     ir::Program retry = cast_program ? *cast_program : program;
     std::vector<LogMessage> messages = parse_info_log(out.parse_log);
     std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, assigned);
     std::vector<CastCall> more = cast_rejected_calls(retry, source.root_name, messages);
+    // The files as written go to the SourceMap first, so warnings point at them.
+    add_included_files(*includer, sources);
+    std::map<std::string, std::string> retry_overrides = overrides;
+    std::vector<CastCall> more_in_files =
+        cast_rejected_calls_in_includes(retry_overrides, includer->returned_texts(), retry, messages, sources);
+    more.insert(more.end(), more_in_files.begin(), more_in_files.end());
     if (more.empty() && more_assigned.empty()) break;
     for (ir::SourceChunk& chunk : retry.includes) chunk.text = rewrite_assigned_uniforms(chunk.text, more_assigned);
     retry.body.text = rewrite_assigned_uniforms(retry.body.text, more_assigned);
@@ -222,11 +248,16 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
     AssembledSource retry_source = assemble_source(retry, stage, keywords, options, shader_path(shader, sources));
     auto retry_includer = std::make_unique<FileIncluder>(options, stdlib_dir(options));
     retry_includer->set_assigned_uniforms(all_assigned);
+    retry_includer->set_overrides(retry_overrides);
     GlslangOutput retry_out = run_glslang(retry_source, retry.language, stage, *entry, options, *retry_includer);
-    if (!retry_out.ok && parse_info_log(retry_out.parse_log).size() >= parse_info_log(out.parse_log).size()) break;
+    // Keep a retry that fixed what it rewrote, even if a later call (glslang
+    // stops at the first error of a function) now fails: the next round
+    // rewrites that one.
+    if (!retry_out.ok && !fixed_errors(messages, parse_info_log(retry_out.parse_log))) break;
     cast_program = std::move(retry);
     casts.insert(casts.end(), more.begin(), more.end());
     assigned = std::move(all_assigned);
+    overrides = std::move(retry_overrides);
     source = std::move(retry_source);
     includer = std::move(retry_includer);
     out = std::move(retry_out);

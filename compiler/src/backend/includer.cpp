@@ -63,6 +63,7 @@ std::vector<std::string> FileIncluder::search_dirs(const std::string& includer) 
 glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path, std::string text, const char* header,
                                                                 const char* includer, bool system) {
   records_.push_back({path, includer ? includer : "", header, system});
+  if (auto o = overrides_.find(path); o != overrides_.end()) text = o->second;
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark: glslang rejects it
   if (!is_glsl_file(path)) text = rewrite_assigned_uniforms(rewrite_matrix_swizzles(text), assigned_uniforms_);
   texts_.emplace_back(std::move(path), std::move(text));

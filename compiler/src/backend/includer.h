@@ -11,6 +11,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <deque>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,12 @@ class FileIncluder final : public glslang::TShader::Includer {
   // Global uniforms the program assigns to: their declarations in included
   // files are rewritten (rewrite_assigned_uniforms).
   void set_assigned_uniforms(std::vector<std::string> names) { assigned_uniforms_ = std::move(names); }
+  // Texts served instead of these files' contents (calls given casts).
+  void set_overrides(std::map<std::string, std::string> texts) { overrides_ = std::move(texts); }
+  // Every file returned so far, by path.
+  std::map<std::string, std::string> returned_texts() const {
+    return std::map<std::string, std::string>(texts_.begin(), texts_.end());
+  }
   // Where `#include <x>` looks, in order (for the "not found" note).
   std::vector<std::string> search_dirs(const std::string& includer) const;
 
@@ -63,6 +70,7 @@ class FileIncluder final : public glslang::TShader::Includer {
   std::vector<IncludeRecord> records_;
   std::vector<std::string> too_deep_, too_nested_;
   std::vector<std::string> assigned_uniforms_;
+  std::map<std::string, std::string> overrides_;
   std::deque<std::pair<std::string, std::string>> texts_;  // path, text; stable addresses
 };
 

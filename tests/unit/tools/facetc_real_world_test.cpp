@@ -132,3 +132,32 @@ TEST_F(FacetcTest, AnOutArgumentIsNeverCast) {
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+// The book's ch13 include: two calls in an included file, glslang reporting
+// only the first; both get their casts and a warning each.
+TEST_F(FacetcTest, TruncatingCallsInAnIncludedFileAreCastOneAfterTheOther) {
+  write_all(dir_ / "brdf.cginc", "\xEF\xBB\xBF" "float spec(float n, float f0) { return n * f0; }\n"
+                                 "float first(float4 c) {\n  return spec(0.5, c);\n}\n"
+                                 "float second(float4 c) {\n  float x = 0.25;\n  return spec(x, c);\n}\n");
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#include "brdf.cginc"
+float4 _C;
+float4 vert(float4 v : POSITION) : SV_Position { return v; }
+float4 frag() : SV_Target { return first(_C) + second(_C); }
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"s.shader", "-o", "s.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("brdf.cginc:3:10: warning: implicit truncation of vector type in a call to 'spec'"));
+  EXPECT_THAT(run.err, HasSubstr("brdf.cginc:7:10: warning: implicit truncation of vector type in a call to 'spec'"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
