@@ -8,39 +8,14 @@
 
 #include "facet/sema.h"
 #include "sema/lower.h"
+#include "sema_test_util.h"
 
 namespace facet::sema {
 namespace {
 
-struct Analyzed {
-  SourceMap sources;
-  Diagnostics diags;
-  FileId file = kNoFile;
-  std::optional<ir::Shader> ir;
+using test_util::Analyzed;
 
-  const Diagnostic* find(DiagId id) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.id == id) return &d;
-    }
-    return nullptr;
-  }
-  // The source text a diagnostic points at.
-  std::string_view text_at(const Diagnostic& d) const {
-    return std::string_view(sources.text(d.span.file)).substr(d.span.begin, d.span.end - d.span.begin);
-  }
-  const ir::Pass& pass(size_t i = 0, size_t sub = 0) const { return ir->subshaders.at(sub).passes.at(i); }
-  const std::string& hlsl(size_t i = 0) const { return pass(i).program->body.text; }
-};
-
-std::unique_ptr<Analyzed> analyze_text(std::string text) {
-  auto a = std::make_unique<Analyzed>();
-  a->file = a->sources.add_file("ff.shader", std::move(text));
-  auto ast = shaderlab::parse(a->file, a->sources, {}, a->diags);
-  if (!ast) return a;
-  auto ir = analyze(*ast, a->sources, {}, a->diags);
-  if (ir) a->ir = std::move(*ir);
-  return a;
-}
+std::unique_ptr<Analyzed> analyze_text(std::string text) { return test_util::analyze_text(std::move(text), {}, "ff.shader"); }
 
 const char* kProps = R"(Properties {
   _Color ("Color", Color) = (1,1,1,1)

@@ -6,35 +6,13 @@
 
 #include "facet/sema.h"
 #include "sema/lower.h"
+#include "sema_test_util.h"
 
 namespace facet::sema {
 namespace {
 
-struct Analyzed {
-  SourceMap sources;
-  Diagnostics diags;
-  FileId file = kNoFile;
-  std::optional<ir::Shader> ir;
-
-  const Diagnostic* find(DiagId id) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.id == id) return &d;
-    }
-    return nullptr;
-  }
-  LineColumn at(SourceSpan s) const { return sources.line_column(s.file, s.begin); }
-  const ir::Program& program(size_t pass = 0) const { return *ir->subshaders.at(0).passes.at(pass).program; }
-};
-
-std::unique_ptr<Analyzed> analyze_text(std::string text, const SemaOptions& options = {}) {
-  auto a = std::make_unique<Analyzed>();
-  a->file = a->sources.add_file("test.shader", std::move(text));
-  auto ast = shaderlab::parse(a->file, a->sources, {}, a->diags);
-  if (!ast) return a;
-  auto ir = analyze(*ast, a->sources, options, a->diags);
-  if (ir) a->ir = std::move(*ir);
-  return a;
-}
+using test_util::Analyzed;
+using test_util::analyze_text;
 
 std::string cg_pass(std::string_view body) {
   return "Shader \"T\" { SubShader { Pass {\nCGPROGRAM\n" + std::string(body) + "\nENDCG\n} } }";
