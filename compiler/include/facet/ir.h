@@ -138,6 +138,9 @@ struct Program {
   std::array<std::string, 5> entry_points;
   int shader_target = 25;             // "#pragma target 3.0" -> 30 (Unity's default 2.5)
   std::string surface_function;       // "#pragma surface fn Model ..." when present
+  // The LightMode tag of the pass that runs it ("" when none): Unity's
+  // compiler defines UNITY_PASS_<MODE> from it (UNITY_PASS_META, ...).
+  std::string light_mode;
   bool is_surface() const { return !surface_function.empty(); }
   bool has_stage(Stage s) const { return !entry_points[size_t(s)].empty(); }
 };

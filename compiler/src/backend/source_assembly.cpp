@@ -59,6 +59,41 @@ constexpr std::string_view kUnityTier3Defines =
     "#define UNITY_ENABLE_NATIVE_SHADOW_LOOKUPS 1\n"
     "#define UNITY_LIGHTMAP_RGBM_ENCODING 1\n";
 
+// Whether `text` has a "#define NAME" of its own.
+bool defines_macro(std::string_view text, std::string_view name) {
+  for (size_t at = text.find(name); at != std::string_view::npos; at = text.find(name, at + 1)) {
+    size_t line = text.rfind('\n', at);
+    line = line == std::string_view::npos ? 0 : line + 1;
+    std::string_view before = text.substr(line, at - line);
+    size_t hash = before.find_first_not_of(" \t");
+    if (hash == std::string_view::npos || before[hash] != '#') continue;
+    std::string_view directive = before.substr(hash + 1);
+    size_t word = directive.find_first_not_of(" \t");
+    if (word == std::string_view::npos || directive.substr(word, 6) != "define") continue;
+    if (directive.substr(word + 6).find_first_not_of(" \t") == std::string_view::npos) return true;
+  }
+  return false;
+}
+
+// Unity defines UNITY_PASS_<MODE> for the LightModes its include files test
+// (UnityStandardInput reads the lightmap uv in the Meta pass by it), unless
+// the program defines it itself, as surface shaders' generated code does.
+void append_pass_define(std::string& out, const ir::Program& program) {
+  static constexpr std::pair<std::string_view, std::string_view> kPassDefines[] = {
+      {"ForwardBase", "UNITY_PASS_FORWARDBASE"},   {"ForwardAdd", "UNITY_PASS_FORWARDADD"},
+      {"Deferred", "UNITY_PASS_DEFERRED"},         {"ShadowCaster", "UNITY_PASS_SHADOWCASTER"},
+      {"PrepassBase", "UNITY_PASS_PREPASSBASE"},   {"PrepassFinal", "UNITY_PASS_PREPASSFINAL"},
+      {"Meta", "UNITY_PASS_META"},
+  };
+  for (auto [mode, name] : kPassDefines) {
+    if (upper(program.light_mode) != upper(mode)) continue;
+    bool own = defines_macro(program.body.text, name) ||
+               std::any_of(program.includes.begin(), program.includes.end(),
+                           [&](const ir::SourceChunk& c) { return defines_macro(c.text, name); });
+    if (!own) out += fmt::format("#define {} 1\n", name);
+  }
+}
+
 void append_defines(std::string& out, const ir::Program& program, Stage stage,
                     const std::vector<std::string>& keywords, const BackendOptions& options) {
   out += fmt::format("#define {} 1\n", stage_define(stage));
@@ -73,6 +108,7 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
     out += "#define UNITY_COMPILER_HLSLCC\n";
     if (unity_cgincludes_on_path(options)) out += kUnityTier3Defines;
   }
+  append_pass_define(out, program);
   for (const std::string& keyword : keywords) {
     if (!keyword.empty()) out += fmt::format("#define {} 1\n", keyword);
   }

@@ -144,6 +144,9 @@ Result<ir::Shader> analyze(const ast::Shader& shader, const SourceMap& sources, 
     bool in_category = sub.category >= 0 && size_t(sub.category) < categories.size();
     out.subshaders.push_back(lower_subshader(sub, in_category ? categories[size_t(sub.category)] : root, ctx));
     lower_fixed_function_passes(shader, sub, out.subshaders.size() - 1, out.subshaders.back(), ctx);
+    for (ir::Pass& pass : out.subshaders.back().passes) {
+      if (pass.program) pass.program->light_mode = pass.tag("LightMode");
+    }
   }
   if (ctx.errors > 0) return failure(std::to_string(ctx.errors) + " error(s) in '" + shader.name + "'");
   return out;

@@ -208,6 +208,7 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
     // The Fallback's shadow caster is Legacy VertexLit's: not tessellated.
     bool tessellated = directive->tessellated() && info.kind != GeneratedPass::fallback_shadow_caster;
     pass.program = wrap(user, file, pass_pragmas(user, info.kind, *directive, tessellated), tessellated);
+    pass.program->light_mode = info.light_mode;
     pass.span = user.body.span;
     out.push_back(std::move(pass));
   }

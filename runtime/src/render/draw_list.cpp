@@ -57,9 +57,16 @@ std::string join(const std::vector<std::string>& words) {
 }
 
 // How a pass takes part in forward rendering.
-enum class Role { once, base, add, skip };
+enum class Role { once, base, add, vertex, skip };
 
-Role role_of(const ir::Pass& pass, std::string& why) {
+bool forward_mode(const ir::Pass& pass) {
+  std::string mode = pass.tag("LightMode");
+  return iequals(mode, "ForwardBase") || iequals(mode, "ForwardAdd");
+}
+
+// `forward_shader`: the shader has ForwardBase or ForwardAdd passes, which
+// Unity's forward path draws instead of its vertex-lit ones.
+Role role_of(const ir::Pass& pass, bool forward_shader, std::string& why) {
   if (pass.kind != ir::PassKind::normal || !pass.program) {
     why = pass.kind == ir::PassKind::grab_pass ? "GrabPass is not supported yet" : "UsePass is not supported yet";
     return Role::skip;
@@ -68,6 +75,15 @@ Role role_of(const ir::Pass& pass, std::string& why) {
   if (mode.empty() || iequals(mode, "Always") || iequals(mode, "SRPDefaultUnlit")) return Role::once;
   if (iequals(mode, "ForwardBase")) return Role::base;
   if (iequals(mode, "ForwardAdd")) return Role::add;
+  if (iequals(mode, "Vertex")) {
+    if (!forward_shader) return Role::vertex;
+    why = "LightMode Vertex: the shader has forward passes, which forward rendering draws instead";
+    return Role::skip;
+  }
+  if (iequals(mode, "VertexLM") || iequals(mode, "VertexLMRGBM")) {
+    why = fmt::format("LightMode {}: drawn only for lightmapped objects (facet has no lightmaps)", mode);
+    return Role::skip;
+  }
   why = iequals(mode, "ShadowCaster") ? "LightMode ShadowCaster: drawn only into shadow maps"
                                       : fmt::format("LightMode {} is not part of forward rendering", mode);
   return Role::skip;
@@ -126,18 +142,34 @@ struct Builder {
     return add_draw(context, scene, library, object, pass_index, light, global, std::move(record), out);
   }
 
+  Result<void, RenderError> vertex_lit_draw(ObjectState& object, size_t p, const std::vector<std::string>& fog,
+                                            const std::string& fog_note, DrawRecord record) {
+    std::vector<size_t> chosen = vertex_lights(scene, lights, object);
+    const LightValues& values = out.vertex_lights.emplace_back(vertex_light_values(scene, chosen, lights.view));
+    for (size_t i : chosen) record.light += (record.light.empty() ? "" : ", ") + light_name(scene, i);
+    record.why = fmt::format("LightMode Vertex: lit per vertex by {} of the scene's lights (at most 8)", chosen.size()) +
+                 fog_note;
+    return add(object, p, &values, fog, std::move(record));
+  }
+
   Result<void, RenderError> object_draws(ObjectState& object) {
     std::vector<std::string> fog = fog_keywords(scene);
     std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
+    bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
+                                      [](const SelectedPass& p) { return forward_mode(*p.ir); });
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       const ir::Pass& pass = *object.shader->passes[p].ir;
       DrawRecord record = pass_record(object, p);
       std::string why;
-      Role role = role_of(pass, why);
+      Role role = role_of(pass, forward_shader, why);
       if (role == Role::skip) {
         record.drawn = false;
         record.why = why;
         out.skipped.push_back(record);
+        continue;
+      }
+      if (role == Role::vertex) {
+        FACET_TRY(vertex_lit_draw(object, p, fog, fog_note, record));
         continue;
       }
       if (role == Role::once) {
@@ -197,8 +229,9 @@ struct Builder {
 
 }  // namespace
 
-LightSetup setup_lights(const Scene& scene) {
+LightSetup setup_lights(const Scene& scene, const glm::mat4& view) {
   LightSetup setup;
+  setup.view = view;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     setup.lights.push_back(light_values(scene.lights[i]));
     // ForwardBase has no cookie variant (multi_compile_fwdbase declares only
@@ -211,7 +244,13 @@ LightSetup setup_lights(const Scene& scene) {
   return setup;
 }
 
-std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
+namespace {
+
+// The lights that reach `object`, directional ones first, then by Unity's
+// importance (brightness falling off with distance over range); lights out
+// of range of the object's bounds are culled, as Unity culls them.
+std::vector<size_t> ranked_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object,
+                                  bool include_main) {
   struct Candidate {
     size_t index;
     bool directional;
@@ -219,7 +258,7 @@ std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup,
   };
   std::vector<Candidate> candidates;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (int(i) == setup.main) continue;
+    if (int(i) == setup.main && !include_main) continue;
     const SceneLight& light = scene.lights[i];
     const LightValues& values = setup.lights[i];
     if (values.brightness <= 0) continue;
@@ -228,7 +267,7 @@ std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup,
       continue;
     }
     float d = glm::length(values.position - object.center);
-    if (d >= light.range + object.radius) continue;  // out of range: Unity culls it for this object
+    if (d >= light.range + object.radius) continue;
     float r = d / light.range;
     candidates.push_back({i, false, values.brightness / (1 + 25 * r * r)});
   }
@@ -236,9 +275,23 @@ std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup,
     if (a.directional != b.directional) return a.directional;
     return a.importance > b.importance;
   });
-  size_t limit = size_t(std::max(0, scene.pixel_light_count - (setup.main >= 0 ? 1 : 0)));
   std::vector<size_t> out;
-  for (size_t i = 0; i < candidates.size() && i < limit; ++i) out.push_back(candidates[i].index);
+  for (const Candidate& c : candidates) out.push_back(c.index);
+  return out;
+}
+
+}  // namespace
+
+std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
+  std::vector<size_t> out = ranked_lights(scene, setup, object, false);
+  size_t limit = size_t(std::max(0, scene.pixel_light_count - (setup.main >= 0 ? 1 : 0)));
+  if (out.size() > limit) out.resize(limit);
+  return out;
+}
+
+std::vector<size_t> vertex_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
+  std::vector<size_t> out = ranked_lights(scene, setup, object, true);
+  if (out.size() > 8) out.resize(8);
   return out;
 }
 

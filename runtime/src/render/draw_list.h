@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <string>
@@ -61,19 +62,26 @@ struct LightSetup {
   std::vector<LightValues> lights;  // one per scene light
   int main = -1;                    // the brightest directional light, or -1
   LightValues none = no_light();
+  glm::mat4 view{1};                // the camera's: vertex-lit lights are in view space
 };
 
-LightSetup setup_lights(const Scene& scene);
+LightSetup setup_lights(const Scene& scene, const glm::mat4& view);
 
 // The lights beyond the main one that light `object` per pixel, most
 // important first, at most pixel_light_count - 1 when there is a main light.
 std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
+// The lights of a vertex-lit pass of `object`: at most 8, the main light
+// included, directional lights first, then by importance.
+std::vector<size_t> vertex_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
 
 struct DrawListResult {
   std::vector<Draw> draws;            // sorted for submission
   std::vector<DrawRecord> skipped;    // passes not drawn
   uint64_t variants_compiled = 0;
   std::vector<std::string> compiled;  // descriptions, compile order
+  // The lights of vertex-lit draws, one per such draw (a deque: Draw::light
+  // points into it, and adding does not move what is there).
+  std::deque<LightValues> vertex_lights;
 };
 
 // Appends the draw of pass `pass_index` of `object` to out.draws: the

@@ -1,5 +1,6 @@
 #include "render/frame_values.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -196,6 +197,50 @@ LightValues no_light() {
   set(l.values, "_LightColor0", glm::vec4(0));
   set(l.values, "unity_WorldToLight", glm::mat4(1));
   set(l.values, "_LightShadowData", {1, 0, 0, 0});
+  return l;
+}
+
+LightValues vertex_light_values(const Scene& scene, const std::vector<size_t>& lights, const glm::mat4& view) {
+  constexpr size_t kSlots = 8;
+  LightValues l = no_light();
+  // An empty slot: black, and a position and cone that keep the shader's
+  // arithmetic finite.
+  std::vector<float> color(4 * kSlots, 0.0f), position(4 * kSlots, 0.0f), atten(4 * kSlots, 0.0f),
+      spot(4 * kSlots, 0.0f);
+  for (size_t slot = 0; slot < kSlots; ++slot) {
+    position[4 * slot + 2] = 1;
+    atten[4 * slot + 0] = -1;
+    atten[4 * slot + 1] = 1;
+    spot[4 * slot + 2] = 1;
+  }
+  for (size_t slot = 0; slot < std::min(kSlots, lights.size()); ++slot) {
+    const SceneLight& light = scene.lights[lights[slot]];
+    LightValues world = light_values(light);
+    glm::vec3 c = linear_color(light.color) * light.intensity;
+    glm::vec4 pos = light.type == LightType::directional ? view * glm::vec4(-world.direction, 0)
+                                                         : view * glm::vec4(world.position, 1);
+    // Unity's vertex-light falloff: 1 / (1 + 25 d^2 / range^2), cut at the
+    // range; a spot's cone fades from cos(angle / 2) to cos(angle / 4).
+    glm::vec4 a = {-1, 1, 0, 1};
+    glm::vec4 s = {0, 0, 1, 0};
+    if (light.type != LightType::directional) a = {-1, 1, 25 / (light.range * light.range), light.range * light.range};
+    if (light.type == LightType::spot) {
+      float outer = std::cos(glm::radians(light.spot_angle / 2)), mid = std::cos(glm::radians(light.spot_angle / 4));
+      a.x = outer;
+      a.y = 1 / std::max(mid - outer, 0.001f);
+      s = view * glm::vec4(-world.direction, 0);
+    }
+    for (int k = 0; k < 4; ++k) {
+      color[4 * slot + k] = k < 3 ? c[k] : 1.0f;
+      position[4 * slot + k] = pos[k];
+      atten[4 * slot + k] = a[k];
+      spot[4 * slot + k] = s[k];
+    }
+  }
+  l.values.set_elements("unity_LightColor", std::move(color));
+  l.values.set_elements("unity_LightPosition", std::move(position));
+  l.values.set_elements("unity_LightAtten", std::move(atten));
+  l.values.set_elements("unity_SpotDirection", std::move(spot));
   return l;
 }
 

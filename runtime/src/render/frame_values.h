@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "facet/runtime/scene.h"
 #include "facet/runtime/uniforms.h"
@@ -51,6 +52,13 @@ LightValues light_values(const SceneLight& light);
 // The light of a ForwardBase pass when the scene has no directional light,
 // and of passes without LightMode: black, pointing up.
 LightValues no_light();
+
+// The lights of a vertex-lit pass (LightMode Vertex): Unity's
+// unity_LightColor, unity_LightPosition, unity_LightAtten and
+// unity_SpotDirection[8] for up to 8 of the scene's lights (`lights`, most
+// important first), in the view space of `view`; the other slots black.
+// The pixel-light values are those of no_light().
+LightValues vertex_light_values(const Scene& scene, const std::vector<size_t>& lights, const glm::mat4& view);
 
 UniformValues draw_uniforms(const glm::mat4& object_to_world);
 

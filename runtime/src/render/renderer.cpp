@@ -613,7 +613,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     if (!o) return unexpected(o.error());
     objects.push_back(std::move(*o));
   }
-  LightSetup lights = setup_lights(scene);
+  LightSetup lights = setup_lights(scene, camera.view);
   std::vector<ShadowView> shadow_views;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     if (std::optional<ShadowView> v = shadow_view(scene, i, objects, camera.position)) {
