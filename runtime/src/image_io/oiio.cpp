@@ -1,6 +1,9 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <new>
+
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
@@ -16,14 +19,22 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
 
 }  // namespace
 
-Result<DecodedImage, std::string> read_image_file(const std::string& path) {
+Result<DecodedImage, std::string> read_image_file(const std::string& path, const ImageLimits& limits) {
   auto input = OIIO::ImageInput::open(path);
   if (!input) return unexpected(fmt::format("cannot read the image ({})", OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
-  DecodedImage image{uint32_t(std::max(spec.width, 0)), uint32_t(std::max(spec.height, 0)), spec.nchannels,
+  if (spec.depth > 1) return unexpected(fmt::format("the file holds a 3D image ({} slices); textures are 2D", spec.depth));
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1) return unexpected(std::string("empty image"));
+  if (std::optional<std::string> problem = image_size_problem(uint64_t(spec.width), uint64_t(spec.height), limits)) {
+    return unexpected(*problem);
+  }
+  DecodedImage image{uint32_t(spec.width), uint32_t(spec.height), std::min(spec.nchannels, 4),
                      spec.format.is_floating_point()};
-  if (image.width == 0 || image.height == 0 || image.channels < 1) return unexpected(std::string("empty image"));
-  image.pixels.resize(size_t(image.width) * image.height * image.channels);
+  try {
+    image.pixels.resize(size_t(image.width) * image.height * image.channels);
+  } catch (const std::bad_alloc&) {
+    return unexpected(fmt::format("not enough memory to decode {}x{} pixels", image.width, image.height));
+  }
   if (!input->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
     return unexpected(fmt::format("cannot read the pixels ({})", input->geterror()));
   }

@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <filesystem>
+#include <new>
 
 #include "image_io/image_io.h"
 
@@ -17,7 +18,7 @@ bool is_png(const std::string& path) {
 
 }  // namespace
 
-Result<DecodedImage, std::string> read_image_file(const std::string& path) {
+Result<DecodedImage, std::string> read_image_file(const std::string& path, const ImageLimits& limits) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str())) {
@@ -25,21 +26,29 @@ Result<DecodedImage, std::string> read_image_file(const std::string& path) {
     png_image_free(&png);
     return unexpected(fmt::format("cannot read the image ({}; this build reads PNG files only)", why));
   }
+  // The header is read, no pixel yet: refused here, PNG_IMAGE_SIZE (32-bit
+  // arithmetic) cannot overflow and no bomb is inflated.
+  if (std::optional<std::string> problem = image_size_problem(png.width, png.height, limits)) {
+    png_image_free(&png);
+    return unexpected(*problem);
+  }
   // 8-bit RGBA whatever the file holds; libpng converts 16-bit files (which
   // it takes to be linear) to sRGB-encoded 8 bits on the way.
   png.format = PNG_FORMAT_RGBA;
   DecodedImage image{png.width, png.height, 4, false};
-  if (image.width == 0 || image.height == 0) {
+  std::vector<png_byte> bytes;
+  try {
+    bytes.resize(PNG_IMAGE_SIZE(png));
+    image.pixels.resize(bytes.size());
+  } catch (const std::bad_alloc&) {
     png_image_free(&png);
-    return unexpected(std::string("empty image"));
+    return unexpected(fmt::format("not enough memory to decode {}x{} pixels", image.width, image.height));
   }
-  std::vector<png_byte> bytes(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
     std::string why = png.message;
     png_image_free(&png);
     return unexpected(fmt::format("cannot read the pixels ({})", why));
   }
-  image.pixels.resize(bytes.size());
   for (size_t i = 0; i < bytes.size(); ++i) image.pixels[i] = float(bytes[i]) / 255.0f;
   return image;
 }

@@ -150,9 +150,11 @@ void compute_tangents(MeshData& mesh) {
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     glm::vec3 n = vec3_of(mesh.vertices[i].normal);
     glm::vec3 t = tangents[i] - n * glm::dot(n, tangents[i]);
-    if (glm::dot(t, t) < 1e-12f) {  // no UV gradient: any vector orthogonal to n
+    // (written as !(>=) so that NaN, from UV gradients that overflow, falls back too)
+    if (!(glm::dot(t, t) >= 1e-12f) || !std::isfinite(glm::dot(t, t))) {  // no UV gradient: any vector orthogonal to n
       t = glm::cross(std::abs(n.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), n);
     }
+    if (!(glm::dot(t, t) >= 1e-12f) || !std::isfinite(glm::dot(t, t))) t = glm::vec3(1, 0, 0);  // a zero normal (vn 0 0 0)
     t = glm::normalize(t);
     float w = glm::dot(glm::cross(n, t), bitangents[i]) < 0 ? -1.0f : 1.0f;
     mesh.vertices[i].tangent = {t.x, t.y, t.z, w};

@@ -64,6 +64,20 @@ std::vector<std::byte> encode(const std::vector<float>& linear, VkFormat format)
   return out;
 }
 
+// The image budget, with the side no wider than the device takes: a file
+// past this device's maxImageDimension2D is refused from its header, before
+// any decoding, with a message that names that limit.
+ImageLimits texture_limits(const Context& context) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(context.physical_device(), &properties);
+  ImageLimits limits;
+  if (properties.limits.maxImageDimension2D < limits.max_side) {
+    limits.max_side = properties.limits.maxImageDimension2D;
+    limits.side_source = "this device's maxImageDimension2D";
+  }
+  return limits;
+}
+
 }  // namespace
 
 Resources::~Resources() {
@@ -111,7 +125,7 @@ Result<LoadedTexture, std::string> Resources::solid(const std::array<float, 4>& 
 }
 
 Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref) {
-  Result<DecodedImage, std::string> decoded = read_image_file(ref.name);
+  Result<DecodedImage, std::string> decoded = read_image_file(ref.name, texture_limits(context_));
   if (!decoded) return unexpected(fmt::format("{}: {}", ref.name, decoded.error()));
   uint32_t w = decoded->width, h = decoded->height;
   int channels = decoded->channels;
@@ -147,7 +161,7 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
   VkResultOf<Image> image = create_image(context_, {.width = w, .height = h, .mips = uint32_t(mips.size()),
                                                     .format = format,
                                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-  if (!image) return unexpected(describe(image.error()));
+  if (!image) return unexpected(fmt::format("{}: {}", ref.name, describe(image.error())));
   std::vector<std::span<const std::byte>> spans(mips.begin(), mips.end());
   VkResultOf<void> up = upload_image(context_, *image, spans);
   if (!up) return unexpected(describe(up.error()));

@@ -1,11 +1,19 @@
 // The JSON reader of docs/scene-format.md. Every check names the JSON path
 // of the value it rejects; unknown keys are errors so that a misspelt key
-// does not silently keep its default.
+// does not silently keep its default. Hostile input gets an error too: a
+// number no double holds (1e400) is located like a syntax error, numbers
+// must fit a float, nesting is limited, and no exception of nlohmann or
+// std::filesystem leaves parse_scene.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -40,9 +48,16 @@ void check_keys(const json& j, const std::string& path, std::initializer_list<co
   }
 }
 
+// Every number of a scene becomes a float: one past float's range would be
+// infinite, and an infinite size or angle reaches the matrices as NaN.
 float number(const json& j, const std::string& path) {
   if (!j.is_number()) throw Bad{path, "expected a number"};
-  return j.get<float>();
+  double v = j.get<double>();
+  if (!std::isfinite(v) || std::abs(v) > double(FLT_MAX)) {
+    throw Bad{path, fmt::format("the number {} is out of range (a scene's numbers are floats, at most {:g})", j.dump(),
+                                double(FLT_MAX))};
+  }
+  return float(v);
 }
 
 float positive(const json& j, const std::string& path) {
@@ -57,7 +72,7 @@ std::vector<float> numbers(const json& j, const std::string& path, size_t min, s
   std::vector<float> out;
   for (size_t i = 0; i < j.size(); ++i) {
     if (!j[i].is_number()) throw Bad{path, "expected " + want};
-    out.push_back(j[i].get<float>());
+    out.push_back(number(j[i], index(path, i)));
   }
   return out;
 }
@@ -89,11 +104,26 @@ E word(const json& j, const std::string& path, std::initializer_list<std::pair<c
   throw Bad{path, fmt::format("unknown value '{}' (expected one of: {})", w, list)};
 }
 
+// nlohmann keeps non-negative integers unsigned (up to 2^64 - 1), so both
+// kinds are compared before narrowing: 2^64 - 1 must not wrap to -1.
 int integer(const json& j, const std::string& path, int min, int max) {
-  if (!j.is_number_integer() || j.get<long long>() < min || j.get<long long>() > max) {
-    throw Bad{path, fmt::format("expected an integer from {} to {}", min, max)};
+  bool in_range = false;
+  if (j.is_number_unsigned()) {
+    uint64_t v = j.get<uint64_t>();
+    in_range = v <= uint64_t(max) && int64_t(v) >= min;
+  } else if (j.is_number_integer()) {
+    int64_t v = j.get<int64_t>();
+    in_range = v >= min && v <= max;
   }
-  return j.get<int>();
+  if (!in_range) throw Bad{path, fmt::format("expected an integer from {} to {}", min, max)};
+  return int(j.get<int64_t>());
+}
+
+// A file test that reports instead of throwing: a name too long for the
+// file system (ENAMETOOLONG) makes the throwing overload abort the reader.
+bool is_file(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
 }
 
 struct Reader {
@@ -112,7 +142,7 @@ struct Reader {
     if (j.contains("scale")) {
       const json& s = member(j, "scale");
       if (s.is_number()) {
-        float v = s.get<float>();
+        float v = number(s, join(path, "scale"));
         t.scale = {v, v, v};
       } else {
         t.scale = vec3(s, join(path, "scale"));
@@ -241,7 +271,7 @@ struct Reader {
     static const std::set<std::string> builtins = {"white", "black", "gray", "grey", "bump", "red"};
     t.builtin = builtins.count(name) != 0;
     t.name = t.builtin ? name : resolve(name);
-    if (!t.builtin && !std::filesystem::is_regular_file(t.name)) {
+    if (!t.builtin && !is_file(t.name)) {
       throw Bad{j.is_string() ? path : join(path, "texture"), fmt::format("texture file '{}' not found", t.name)};
     }
     return t;
@@ -252,7 +282,7 @@ struct Reader {
     p.name = name;
     p.json_path = path;
     if (j.is_number()) {
-      p.numbers = {j.get<float>()};
+      p.numbers = {number(j, path)};
     } else if (j.is_boolean()) {
       p.numbers = {j.get<bool>() ? 1.0f : 0.0f};
     } else if (j.is_array()) {
@@ -265,13 +295,19 @@ struct Reader {
     return p;
   }
 
-  SceneMaterial material(const json& j, const std::string& path) const {
-    check_keys(j, path, {"shader", "properties", "keywords", "queue"});
+  // `post_pass`: the object is a post effect's, which may also hold "pass"
+  // (read by post_effect).
+  SceneMaterial material(const json& j, const std::string& path, bool post_pass = false) const {
+    if (post_pass) {
+      check_keys(j, path, {"shader", "properties", "keywords", "pass"});
+    } else {
+      check_keys(j, path, {"shader", "properties", "keywords", "queue"});
+    }
     SceneMaterial m;
     m.json_path = path;
     if (!j.contains("shader")) throw Bad{path, "missing key 'shader' (a .shader file)"};
     m.shader = resolve(text(member(j, "shader"), join(path, "shader")));
-    if (!std::filesystem::is_regular_file(m.shader)) {
+    if (!is_file(m.shader)) {
       throw Bad{join(path, "shader"), fmt::format("shader file '{}' not found", m.shader)};
     }
     if (j.contains("properties")) {
@@ -304,7 +340,7 @@ struct Reader {
       o.mesh = mesh;
     } else {
       o.mesh = resolve(mesh);
-      if (!std::filesystem::is_regular_file(o.mesh)) {
+      if (!is_file(o.mesh)) {
         throw Bad{join(path, "mesh"), fmt::format("not a built-in mesh (cube, plane, quad, sphere, torus) and no file '{}'",
                                                   o.mesh)};
       }
@@ -363,9 +399,9 @@ struct Reader {
     ScenePostEffect e;
     e.json_path = path;
     if (j.contains("pass")) e.pass = integer(member(j, "pass"), join(path, "pass"), 0, 63);
-    json material_only = j;
-    material_only.erase("pass");
-    e.material = material(material_only, path);
+    // No copy of `j` without "pass": copying a json value recurses, and
+    // deeply nested properties would overflow the stack.
+    e.material = material(j, path, true);
     return e;
   }
 
@@ -423,27 +459,109 @@ std::string line_column(const std::string& text, size_t byte) {
   return fmt::format("{}:{}", line, column);
 }
 
+// Deeper than any scene needs (about 6 levels), and shallow enough that no
+// recursive walk of a json value can overflow the stack.
+constexpr size_t kMaxJsonDepth = 64;
+
+// The byte offset of the first '[' or '{' that opens level kMaxJsonDepth + 1,
+// skipping string contents.
+std::optional<size_t> too_deep_at(const std::string& text) {
+  size_t depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
+// nlohmann's DOM builder, keeping where a failure happened: its exceptions
+// carry a byte offset only for syntax errors (parse_error), not for a
+// number that overflows a double (out_of_range 406).
+class LocatingDomBuilder {
+ public:
+  using Dom = nlohmann::detail::json_sax_dom_parser<json>;
+  explicit LocatingDomBuilder(json& root) : dom_(root, false) {}
+
+  bool null() { return dom_.null(); }
+  bool boolean(bool v) { return dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t v, const json::string_t& s) { return dom_.number_float(v, s); }
+  bool string(json::string_t& v) { return dom_.string(v); }
+  bool binary(json::binary_t& v) { return dom_.binary(v); }
+  bool start_object(size_t n) { return dom_.start_object(n); }
+  bool key(json::string_t& v) { return dom_.key(v); }
+  bool end_object() { return dom_.end_object(); }
+  bool start_array(size_t n) { return dom_.start_array(n); }
+  bool end_array() { return dom_.end_array(); }
+
+  // `position` is one past the last byte read; a syntax error is located at
+  // the byte before it (as nlohmann's own messages do), any other failure
+  // at the start of the token it was reading.
+  bool parse_error(size_t position, const std::string& last_token, const nlohmann::detail::exception& e) {
+    bool syntax = dynamic_cast<const json::parse_error*>(&e) != nullptr;
+    byte_ = syntax ? (position ? position - 1 : 0) : (position >= last_token.size() ? position - last_token.size() : 0);
+    std::string what = e.what();
+    if (size_t colon = what.rfind(": "); syntax && colon != std::string::npos) {
+      what = what.substr(colon + 2);
+    } else if (size_t bracket = what.find("] "); bracket != std::string::npos) {
+      what = what.substr(bracket + 2);  // drop "[json.exception.out_of_range.406] "
+    }
+    message_ = what;
+    return false;
+  }
+
+  size_t byte() const { return byte_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  Dom dom_;
+  size_t byte_ = 0;
+  std::string message_ = "cannot parse the JSON";
+};
+
+Result<json, SceneError> parse_json(const std::string& text, const std::string& path) {
+  if (std::optional<size_t> at = too_deep_at(text)) {
+    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: nested deeper than {} levels", path,
+                                             line_column(text, *at), kMaxJsonDepth)});
+  }
+  json j;
+  LocatingDomBuilder builder(j);
+  if (!json::sax_parse(text, &builder)) {
+    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: {}", path, line_column(text, builder.byte()),
+                                             builder.message())});
+  }
+  return j;
+}
+
 }  // namespace
 
+// The one boundary where exceptions stop: Bad from the reader's checks, and
+// whatever nlohmann, std::filesystem or an allocation might still throw.
 Result<Scene, SceneError> parse_scene(const std::string& text, const std::string& path) {
-  json j;
   try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // nlohmann's byte is one past the offending character.
-    std::string what = e.what();
-    if (size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
-    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: {}", path, line_column(text, e.byte ? e.byte - 1 : 0), what)});
-  }
-  Reader reader{std::filesystem::path(path).parent_path()};
-  try {
-    Scene scene = reader.scene(j);
+    Result<json, SceneError> j = parse_json(text, path);
+    if (!j) return unexpected(j.error());
+    Reader reader{std::filesystem::path(path).parent_path()};
+    Scene scene = reader.scene(*j);
     scene.path = path;
     return scene;
   } catch (const Bad& bad) {
     std::string where = bad.path.empty() ? "" : bad.path + ": ";
     return unexpected(SceneError{fmt::format("{}: {}{}", path, where, bad.what)});
-  } catch (const json::exception& e) {
+  } catch (const std::bad_alloc&) {
+    return unexpected(SceneError{fmt::format("{}: not enough memory to read the scene", path)});
+  } catch (const std::exception& e) {
     return unexpected(SceneError{fmt::format("{}: {}", path, e.what())});
   }
 }
@@ -452,6 +570,11 @@ Result<Scene, SceneError> load_scene(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     return unexpected(SceneError{fmt::format("{}: cannot open the scene file (no such file)", path)});
+  }
+  constexpr uintmax_t kMaxSceneBytes = uintmax_t(64) << 20;  // a scene is a few KiB; its DOM takes ~10x the text
+  if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
+    return unexpected(SceneError{fmt::format("{}: the scene file has {} bytes, more than the {} MiB a scene may have",
+                                             path, size, kMaxSceneBytes >> 20)});
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream buffer;

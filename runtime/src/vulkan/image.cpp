@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -54,6 +55,50 @@ VkResultOf<Buffer> staging(const Context& context, VkDeviceSize bytes) {
 }
 
 uint32_t mip_extent(uint32_t size, uint32_t mip) { return std::max(1u, size >> mip); }
+
+// Vulkan leaves an image past the device's limits undefined behaviour (the
+// validation layer reports it, lavapipe crashes on a 1 x 10^6 image), so the
+// sizes are checked against the limits, and then against what the device
+// allows for this format and usage, before vkCreateImage.
+VkResultOf<void> check_device_limits(const Context& context, const ImageDesc& desc, const VkImageCreateInfo& info) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(context.physical_device(), &properties);
+  const VkPhysicalDeviceLimits& limits = properties.limits;
+  bool cube = desc.view == VK_IMAGE_VIEW_TYPE_CUBE || desc.view == VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+  bool volume = desc.view == VK_IMAGE_VIEW_TYPE_3D;
+  uint32_t max_side = volume ? limits.maxImageDimension3D : cube ? limits.maxImageDimensionCube : limits.maxImageDimension2D;
+  const char* limit = volume ? "maxImageDimension3D" : cube ? "maxImageDimensionCube" : "maxImageDimension2D";
+  if (desc.width > max_side || desc.height > max_side || (volume && desc.depth > max_side)) {
+    return vk_failure(VkErrorCode::invalid_argument,
+                      fmt::format("a {}x{} image is larger than this device's {} ({})", desc.width, desc.height, limit,
+                                  max_side));
+  }
+  if (!volume && desc.depth != 1) return vk_failure(VkErrorCode::invalid_argument, "only a 3D image has a depth");
+  if (desc.layers > limits.maxImageArrayLayers) {
+    return vk_failure(VkErrorCode::invalid_argument, fmt::format("{} layers are more than this device's maxImageArrayLayers ({})",
+                                                                 desc.layers, limits.maxImageArrayLayers));
+  }
+  uint32_t full_chain = 1;  // mips of a full chain: floor(log2(largest side)) + 1
+  for (uint32_t side = std::max({desc.width, desc.height, desc.depth}); side > 1; side >>= 1) ++full_chain;
+  if (desc.mips > full_chain) {
+    return vk_failure(VkErrorCode::invalid_argument, fmt::format("{} mips are more than a {}x{} image has ({})", desc.mips,
+                                                                 desc.width, desc.height, full_chain));
+  }
+  VkImageFormatProperties format{};
+  VkResult r = vkGetPhysicalDeviceImageFormatProperties(context.physical_device(), info.format, info.imageType,
+                                                        info.tiling, info.usage, info.flags, &format);
+  if (r != VK_SUCCESS) return vk_failure(VkErrorCode::invalid_argument, "the device has no such image format", r);
+  if (desc.width > format.maxExtent.width || desc.height > format.maxExtent.height ||
+      desc.depth > format.maxExtent.depth || desc.mips > format.maxMipLevels || desc.layers > format.maxArrayLayers) {
+    return vk_failure(VkErrorCode::invalid_argument,
+                      fmt::format("a {}x{}x{} image of {} mips and {} layers is beyond what the device allows for its "
+                                  "format ({}x{}x{}, {} mips, {} layers)",
+                                  desc.width, desc.height, desc.depth, desc.mips, desc.layers, format.maxExtent.width,
+                                  format.maxExtent.height, format.maxExtent.depth, format.maxMipLevels,
+                                  format.maxArrayLayers));
+  }
+  return {};
+}
 
 }  // namespace
 
@@ -129,6 +174,7 @@ VkResultOf<Image> create_image(const Context& context, const ImageDesc& desc) {
   info.usage = desc.usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  if (VkResultOf<void> fits = check_device_limits(context, desc, info); !fits) return unexpected(fits.error());
   if (VkResult r = vkCreateImage(image.device_, &info, nullptr, &image.image_); r != VK_SUCCESS) {
     return vk_failure(VkErrorCode::object_failed, fmt::format("cannot create a {}x{} image", desc.width, desc.height), r);
   }

@@ -1,0 +1,324 @@
+// Hostile input through `facet render`: OBJ meshes, scene JSON and image
+// files that once crashed it (each case is the input a fuzzing probe found,
+// or one of its kind). Each must give exit code 1, one message naming the
+// file and where in it, and no output file.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "facet/commands.h"
+#include "facet/runtime/mesh.h"
+#include "render_test_support.h"
+
+namespace facet::runtime {
+namespace {
+
+using test_support::example_shader;
+using test_support::small_scene;
+using test_support::test_dir;
+using test_support::write_scene;
+
+struct Outcome {
+  int code = 0;
+  std::string out, err;
+};
+
+// `facet render <scene> -o <name>.png`, checking that nothing was written.
+Outcome render_expecting_failure(const std::string& name, const std::string& scene_path) {
+  std::string png = (test_dir() / (name + ".out.png")).string();
+  std::filesystem::remove(png);
+  std::vector<const char*> argv = {"render", scene_path.c_str(), "-o", png.c_str()};
+  std::ostringstream out, err;
+  Outcome r;
+  r.code = tool::render_command(int(argv.size()), argv.data(), out, err);
+  r.out = out.str();
+  r.err = err.str();
+  EXPECT_FALSE(std::filesystem::exists(png)) << "an output was written for " << name;
+  return r;
+}
+
+std::string write_file(const std::string& name, const std::string& bytes) {
+  std::filesystem::path path = test_dir() / name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path.string();
+}
+
+// ---------------------------------------------------------------- OBJ meshes
+
+constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+struct ObjCase {
+  const char* name;
+  std::string obj;
+  std::string expected;  // after "<name>.obj:": "line:col: why", or " why" for the whole file
+};
+
+std::ostream& operator<<(std::ostream& os, const ObjCase& c) { return os << c.name; }
+
+std::string many_corners(int n) {
+  std::string text = kTriangle;
+  text += "f";
+  for (int i = 0; i < n; ++i) text += " " + std::to_string(1 + i % 3);
+  return text + "\n";
+}
+
+const ObjCase kObjCases[] = {
+    {"index_past_the_end", std::string(kTriangle) + "f 1 2 4\n",
+     "4:7: face index 4 refers past the 3 vertices defined so far"},
+    {"huge_index", std::string(kTriangle) + "f 1 2 99999999\n",
+     "4:7: face index 99999999 refers past the 3 vertices defined so far"},
+    {"index_past_64_bits", std::string(kTriangle) + "f 1 2 99999999999999999999999\n",
+     "4:7: face index 99999999999999999999999 refers past the 3 vertices defined so far"},
+    {"relative_index_before_the_start", std::string(kTriangle) + "f -1 -2 -9\n",
+     "4:9: relative face index -9 refers before the first vertex (only 3 vertices defined so far)"},
+    {"bad_uv_index", std::string(kTriangle) + "vt 0 0\nvn 0 0 1\nf 1/99/1 2/1/1 3/1/1\n",
+     "6:5: texture coordinate index 99 refers past the 1 texture coordinate defined so far"},
+    {"bad_normal_index", std::string(kTriangle) + "vn 0 0 1\nf 1//77 2//1 3//1\n",
+     "5:6: normal index 77 refers past the 1 normal defined so far"},
+    {"faces_without_vertices", "f 1 2 3\n", "1:3: face index 1 refers past the 0 vertices defined so far"},
+    {"index_defined_later", "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n",
+     "3:7: face index 3 refers past the 2 vertices defined so far"},
+    {"index_zero", std::string(kTriangle) + "f 0 1 2\n", "4:3: face index 0 is not allowed"},
+    {"index_not_a_number", std::string(kTriangle) + "f 1 2 three\n", "4:7: 'three' is not a face index"},
+    {"index_with_junk", std::string(kTriangle) + "f 1 2 3x\n", "4:7: '3x' is not a face index"},
+    {"corner_with_four_parts", std::string(kTriangle) + "f 1/1/1/1 2 3\n", "4:3: '1/1/1/1' is not a face corner"},
+    {"corner_missing_uv", std::string(kTriangle) + "f 1/ 2 3\n", "4:5: missing texture coordinate index in '1/'"},
+    {"two_corner_face", std::string(kTriangle) + "f 1 2\n", "4:1: a face needs at least 3 corners, this one has 2"},
+    {"empty_face", std::string(kTriangle) + "f\n", "4:1: a face needs at least 3 corners, this one has 0"},
+    {"polygon_of_100000_corners", many_corners(100000), "4:1: a face of 100000 corners (at most 512 are supported)"},
+    {"nan_coordinate", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "1:3: 'nan' is not a number"},
+    {"infinite_coordinate", "v 0 0 0\nv 1 0 inf\nv 0 1 0\nf 1 2 3\n", "2:7: 'inf' is not a number"},
+    {"coordinate_past_float", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n", "2:3: '1e39' is out of range"},
+    {"coordinate_past_double", "v 0 0 0\nv 1e400 0 0\nv 0 1 0\nf 1 2 3\n", "2:3: '1e400' is out of range"},
+    {"vertex_of_two_numbers", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "1:1: a vertex needs 3 numbers, this one has 2"},
+    {"bounds_past_float", "v -3e38 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n",
+     " the mesh is too large (its bounding sphere does not fit a float)"},
+    {"crlf_and_cr_lines", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\r\nf 1 2 4\r\n",
+     "4:7: face index 4 refers past the 3 vertices defined so far"},
+};
+
+class HostileObj : public ::testing::TestWithParam<ObjCase> {};
+
+TEST_P(HostileObj, RenderExitsOneWithTheLocatedMessage) {
+  const ObjCase& c = GetParam();
+  std::string obj = write_file(std::string(c.name) + ".obj", c.obj);
+  std::string scene = small_scene(R"([{"mesh": ")" + obj + R"(", "material": {"shader": ")" +
+                                  example_shader("Unlit.shader") + R"("}}])");
+  Outcome r = render_expecting_failure(c.name, write_scene(c.name, scene));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find(std::string(c.name) + ".obj:" + c.expected), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(c.name + std::string(".json: objects[0].mesh: ")), std::string::npos) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostileObj, ::testing::ValuesIn(kObjCases),
+                         [](const ::testing::TestParamInfo<ObjCase>& info) { return std::string(info.param.name); });
+
+// The negative controls: valid files of the same shapes still load, and a
+// relative index means what it should.
+TEST(HostileObjControl, RelativeIndicesCommentsAndQuadsStillLoad) {
+  std::string obj = write_file("control.obj",
+                               "# a quad, then a triangle by relative indices\n"
+                               "v 0 0 0 # trailing comment\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 -1\n"
+                               "f 1/1/1 2/1/1 3/1/1 4/1/1\nf -4//1 -3//1 -2//1\n");
+  MeshError error;
+  std::optional<MeshData> mesh = load_obj(obj, error);
+  ASSERT_TRUE(mesh) << error.message;
+  ASSERT_EQ(mesh->indices.size(), 9u);
+  EXPECT_EQ(mesh->vertices[6].position, (std::array<float, 3>{0, 0, 0}));
+  EXPECT_EQ(mesh->vertices[8].position, (std::array<float, 3>{1, 1, 0}));
+  EXPECT_EQ(mesh->vertices[8].normal, (std::array<float, 3>{0, 0, -1}));
+}
+
+// ---------------------------------------------------------------- scene JSON
+
+struct JsonCase {
+  const char* name;
+  std::string json;
+  std::string expected;  // after "<name>.json"
+};
+
+std::ostream& operator<<(std::ostream& os, const JsonCase& c) { return os << c.name; }
+
+std::string unlit_objects() {
+  return R"([{"mesh": "sphere", "material": {"shader": ")" + example_shader("Unlit.shader") + R"("}}])";
+}
+
+// small_scene with `fields` (a JSON text of members and a trailing comma) in front.
+std::string scene_with(const std::string& fields) {
+  std::string json = small_scene(unlit_objects());
+  json.insert(1, fields);
+  return json;
+}
+
+std::string deeply_nested_post(size_t depth) {
+  std::string value = std::string(depth, '[') + "1" + std::string(depth, ']');
+  return scene_with(R"("post": [{"shader": ")" + example_shader("ImageEffects.shader") +
+                    R"(", "properties": {"_Deep": )" + value + "}}], ");
+}
+
+std::string long_name_mesh() {
+  std::string name(100000, 'a');
+  return small_scene(R"([{"mesh": ")" + name + R"(", "material": {"shader": ")" + example_shader("Unlit.shader") +
+                     R"("}}])");
+}
+
+const JsonCase kJsonCases[] = {
+    {"number_past_double", "{\n  \"time\": 1e400,\n  \"camera\": {}, \"objects\": []}",
+     ".json:2:11: invalid JSON: number overflow parsing '1e400'"},
+    {"negative_number_past_double", R"({"camera": {"fov": -1e400}, "objects": []})",
+     ".json:1:20: invalid JSON: number overflow parsing '-1e400'"},
+    {"number_past_float", scene_with(R"("time": 1e39, )"), ".json: time: the number 1e+39 is out of range"},
+    {"colour_past_float", scene_with(R"("ambient": [1, 1e300, 0], )"),
+     ".json: ambient[1]: the number 1e+300 is out of range"},
+    {"nesting_a_million_deep", deeply_nested_post(1000000), ".json:1:"},
+    {"mesh_name_too_long_for_the_file_system", long_name_mesh(), ".json: objects[0].mesh: not a built-in mesh"},
+};
+
+class HostileSceneJson : public ::testing::TestWithParam<JsonCase> {};
+
+TEST_P(HostileSceneJson, RenderExitsOneWithTheMessage) {
+  const JsonCase& c = GetParam();
+  Outcome r = render_expecting_failure(c.name, write_scene(c.name, c.json));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find(c.name + c.expected), std::string::npos) << r.err.substr(0, 2000);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostileSceneJson, ::testing::ValuesIn(kJsonCases),
+                         [](const ::testing::TestParamInfo<JsonCase>& info) { return std::string(info.param.name); });
+
+TEST(HostileSceneJsonDepth, NestingPastTheLimitNamesWhereItStarts) {
+  std::string json = deeply_nested_post(1000);
+  // The root, "post", its effect and "properties" are levels 1 to 4, so the
+  // value's 61st '[' opens level 65 (all on line 1).
+  size_t column = json.find("[[") + 60 + 1;
+  Outcome r = render_expecting_failure("nesting_columns", write_scene("nesting_columns", json));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("nesting_columns.json:1:" + std::to_string(column) + ": invalid JSON: nested deeper than 64 levels"),
+            std::string::npos)
+      << r.err.substr(0, 2000);
+}
+
+// ---------------------------------------------------------------- PNG files
+
+uint32_t crc32(const std::string& bytes) {
+  uint32_t crc = 0xffffffffu;
+  for (unsigned char b : bytes) {
+    crc ^= b;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+std::string big_endian(uint32_t v) {
+  return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+std::string chunk(const std::string& type, const std::string& data) {
+  return big_endian(uint32_t(data.size())) + type + data + big_endian(crc32(type + data));
+}
+
+// Deflate bits, least significant first; Huffman codes go most significant first.
+struct BitWriter {
+  std::string bytes;
+  int used = 8;
+  void bit(unsigned b) {
+    if (used == 8) {
+      bytes.push_back(0);
+      used = 0;
+    }
+    bytes.back() = char(uint8_t(bytes.back()) | (b << used++));
+  }
+  void code(uint32_t value, int length) {
+    for (int i = length - 1; i >= 0; --i) bit((value >> i) & 1);
+  }
+};
+
+// A zlib stream of `n` zero bytes in one fixed-Huffman block: a literal 0,
+// then copies of 258 bytes at distance 1 (13 bits each, a ratio of ~160:1).
+std::string zlib_zeros(uint64_t n) {
+  BitWriter w;
+  w.bit(1);  // BFINAL
+  w.bit(1);  // BTYPE = 01 (fixed Huffman), low bit first
+  w.bit(0);
+  uint64_t left = n;
+  auto literal_zero = [&] {
+    w.code(0x30, 8);  // literal 0
+    --left;
+  };
+  if (left) literal_zero();
+  for (; left >= 258; left -= 258) {
+    w.code(0xc5, 8);  // length code 285: 258 bytes
+    w.code(0, 5);     // distance code 0: 1 byte back
+  }
+  while (left) literal_zero();
+  w.code(0, 7);  // end of block
+  uint32_t adler = (uint32_t(n % 65521) << 16) | 1u;  // a = 1 + 0s, b = n * a
+  return std::string("\x78\x01", 2) + w.bytes + big_endian(adler);
+}
+
+// An 8-bit greyscale PNG of `width` x `height` whose IDAT inflates to
+// `rows` rows of zeros (all of them for a real image, a few for a header
+// that only claims a size).
+std::string grey_png(uint32_t width, uint32_t height, uint64_t rows) {
+  std::string ihdr = big_endian(width) + big_endian(height) + std::string("\x08\x00\x00\x00\x00", 5);
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", zlib_zeros(rows * (uint64_t(width) + 1))) +
+         chunk("IEND", "");
+}
+
+std::string textured_scene(const std::string& png) {
+  return small_scene(R"([{"mesh": "sphere", "material": {"shader": ")" + example_shader("TexturedAmbient.shader") +
+                     R"(", "properties": {"_MainTex": ")" + png + R"("}}}])");
+}
+
+struct PngCase {
+  const char* name;
+  uint32_t width, height;
+  uint64_t rows;  // rows of pixels the IDAT holds
+  std::string expected;
+};
+
+std::ostream& operator<<(std::ostream& os, const PngCase& c) { return os << c.name; }
+
+const PngCase kPngCases[] = {
+    {"million_squared_header", 1000000, 1000000, 0,
+     "the image is 1000000x1000000 pixels; a side may have at most 16384"},
+    {"one_by_a_million", 1, 1000000, 1000000, "the image is 1x1000000 pixels; a side may have at most 16384"},
+    {"a_million_by_one", 1000000, 1, 1, "the image is 1000000x1 pixels; a side may have at most 16384"},
+    {"decompression_bomb", 9000, 9000, 9000,
+     "the image is 9000x9000 pixels (81000000 in all); at most 67108864 are decoded (facet's pixel budget)"},
+};
+
+class HostilePng : public ::testing::TestWithParam<PngCase> {};
+
+TEST_P(HostilePng, RenderExitsOneNamingTheTexture) {
+  const PngCase& c = GetParam();
+  std::string png = write_file(std::string(c.name) + ".png", grey_png(c.width, c.height, c.rows));
+  Outcome r = render_expecting_failure(c.name, write_scene(c.name, textured_scene(png)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find(".json: objects[0].material.properties._MainTex: " + png + ": " + c.expected),
+            std::string::npos)
+      << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostilePng, ::testing::ValuesIn(kPngCases),
+                         [](const ::testing::TestParamInfo<PngCase>& info) { return std::string(info.param.name); });
+
+// The negative control: the same hand-made PNG at a size within the budget
+// decodes and renders, so the cases above fail for their size alone.
+TEST(HostilePngControl, AHandMadePngWithinTheBudgetRenders) {
+  std::string png = write_file("small_grey.png", grey_png(300, 200, 200));
+  std::string out = (test_dir() / "small_grey.out.png").string();
+  std::string scene = write_scene("small_grey", textured_scene(png));
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
+  std::ostringstream o, e;
+  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace facet::runtime
