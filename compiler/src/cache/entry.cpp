@@ -1,10 +1,13 @@
 // The cache entry format: little-endian, length-prefixed, checksummed.
 //   "FACETCACHE" u16 version
+//   u64 n, n bytes: the key the entry is stored under
+//   u64 XXH3 of the program's preprocessed tokens
 //   u64 n, n x u32 SPIR-V words
 //   u64 n, n bytes of reflection: u32 string count, count x (u32 n, n bytes),
 //                                 then the StageReflection (common/binary_codec.h)
 //   u64 count, count x (u64 n, n bytes) included file paths
 //   u64 XXH64 of every byte before it
+#include <fmt/format.h>
 #include <xxhash.h>
 
 #include <cstring>
@@ -19,19 +22,23 @@ namespace facet::cache {
 namespace {
 
 constexpr std::string_view kMagic = "FACETCACHE";
-constexpr uint16_t kVersion = 2;  // 2: binary reflection (1 was JSON)
+// 3: the key and the token hash (an entry is bound to its key); 2: binary
+// reflection (1 was JSON).
+constexpr uint16_t kVersion = 3;
 constexpr uint64_t kChecksumSeed = 0x66616365745f6361ull;  // "facet_ca"
 
-}  // namespace
-
-static std::string fmt_hex(uint64_t v) {
-  static const char digits[] = "0123456789abcdef";
-  std::string out(16, '0');
-  for (int i = 15; i >= 0; --i, v >>= 4) out[size_t(i)] = digits[v & 0xf];
-  return out;
+// Reflection strings expand through references; their decoded bytes are
+// bounded like a package's (64 x the encoded size + 1 MiB), but at most
+// 256 MiB, since entries themselves are at most kMaxEntryBytes.
+uint64_t reflection_string_budget(uint64_t encoded_bytes) {
+  constexpr uint64_t kMax = uint64_t(256) << 20;
+  uint64_t budget = 64 * encoded_bytes + (uint64_t(1) << 20);
+  return budget < kMax ? budget : kMax;
 }
 
-static std::optional<uint64_t> parse_hex(std::string_view s) {
+std::string fmt_hex(uint64_t v) { return fmt::format("{:016x}", v); }
+
+std::optional<uint64_t> parse_hex(std::string_view s) {
   if (s.size() != 16) return std::nullopt;
   uint64_t v = 0;
   for (char c : s) {
@@ -41,8 +48,6 @@ static std::optional<uint64_t> parse_hex(std::string_view s) {
   }
   return v;
 }
-
-namespace {
 
 void put_u64(std::string& out, uint64_t v) {
   for (int i = 0; i < 8; ++i) out += char((v >> (8 * i)) & 0xff);
@@ -110,7 +115,7 @@ std::string encode_reflection_bytes(const StageReflection& reflection) {
 std::optional<StageReflection> decode_reflection_bytes(std::string_view bytes) {
   std::span<const uint8_t> data(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
   codec::DecodeContext ctx;
-  ctx.string_budget = UINT64_MAX;  // strings are stored inline, so they are bounded by the entry
+  ctx.string_budget = reflection_string_budget(bytes.size());
   codec::Decoder in(data, 0, ctx);
   uint32_t n = in.count(4, "string");
   for (uint32_t i = 0; i < n && in.ok(); ++i) ctx.strings.push_back(in.inline_string());
@@ -120,12 +125,30 @@ std::optional<StageReflection> decode_reflection_bytes(std::string_view bytes) {
   return reflection;
 }
 
+// The checked part of an entry: magic, version and checksum. The body
+// (without the checksum) on success.
+Result<std::string_view> checked_body(std::string_view bytes) {
+  const size_t header = kMagic.size() + 2;
+  if (bytes.size() < header + 8 || bytes.substr(0, kMagic.size()) != kMagic) return failure("not a facet cache entry");
+  uint16_t version = uint16_t(uint8_t(bytes[kMagic.size()]) | uint8_t(bytes[kMagic.size() + 1]) << 8);
+  if (version != kVersion) return failure(fmt::format("format version {}, not {}", version, kVersion));
+  std::string_view body = bytes.substr(0, bytes.size() - 8);
+  Reader tail(bytes.substr(bytes.size() - 8));
+  uint64_t checksum = 0;
+  if (!tail.u64(checksum) || checksum != XXH64(body.data(), body.size(), kChecksumSeed)) {
+    return failure("truncated or altered (its checksum does not match)");
+  }
+  return body;
+}
+
 }  // namespace
 
-std::string encode_entry(const CacheEntry& entry) {
+std::string encode_entry(const std::string& key, const CacheEntry& entry) {
   std::string out(kMagic);
   out += char(kVersion & 0xff);
   out += char(kVersion >> 8);
+  put_bytes(out, key);
+  put_u64(out, entry.token_hash);
   put_u64(out, entry.spirv.size());
   out.append(reinterpret_cast<const char*>(entry.spirv.data()), entry.spirv.size() * 4);
   put_bytes(out, encode_reflection_bytes(entry.reflection));
@@ -135,48 +158,43 @@ std::string encode_entry(const CacheEntry& entry) {
   return out;
 }
 
-std::optional<CacheEntry> decode_entry(std::string_view bytes) {
-  const size_t header = kMagic.size() + 2;
-  if (bytes.size() < header + 8 || bytes.substr(0, kMagic.size()) != kMagic) return std::nullopt;
-  if (uint8_t(bytes[kMagic.size()]) != (kVersion & 0xff) || uint8_t(bytes[kMagic.size() + 1]) != (kVersion >> 8)) {
-    return std::nullopt;
-  }
-  std::string_view body = bytes.substr(0, bytes.size() - 8);
-  Reader tail(bytes.substr(bytes.size() - 8));
-  uint64_t checksum = 0;
-  if (!tail.u64(checksum) || checksum != XXH64(body.data(), body.size(), kChecksumSeed)) return std::nullopt;
-
-  Reader in(body);
+Result<CacheEntry> decode_entry(std::string_view bytes, const std::string& key) {
+  auto body = checked_body(bytes);
+  if (!body) return failure(body.error().reason);
+  Reader in(*body);
   CacheEntry entry;
-  std::string reflection;
+  std::string stored_key, reflection;
   uint64_t files = 0;
-  if (!in.skip(header) || !in.words(entry.spirv) || !in.bytes(reflection) || !in.u64(files)) return std::nullopt;
-  if (files > body.size()) return std::nullopt;
+  if (!in.skip(kMagic.size() + 2) || !in.bytes(stored_key)) return failure("truncated");
+  // The key binding: a copied, renamed or swapped entry carries its own key.
+  if (stored_key != key) return failure(fmt::format("it was stored under another key ({})", stored_key));
+  if (!in.u64(entry.token_hash) || !in.words(entry.spirv) || !in.bytes(reflection) || !in.u64(files) ||
+      files > body->size()) {
+    return failure("malformed");
+  }
   for (uint64_t i = 0; i < files; ++i) {
     std::string path;
-    if (!in.bytes(path)) return std::nullopt;
+    if (!in.bytes(path)) return failure("malformed");
     entry.included_files.push_back(std::move(path));
   }
-  if (!in.at_end()) return std::nullopt;
+  if (!in.at_end()) return failure("malformed (bytes after its end)");
   auto parsed = decode_reflection_bytes(reflection);
-  if (!parsed) return std::nullopt;
+  if (!parsed) return failure("malformed reflection");
   entry.reflection = std::move(*parsed);
   return entry;
 }
 
 std::string_view build_id() { return FACET_BUILD_ID; }
 
-}  // namespace facet::cache
-
-namespace facet::cache {
 namespace {
-constexpr std::string_view kManifestMagic = "FACETMANIFEST1\n";
+constexpr std::string_view kManifestMagic = "FACETMANIFEST2\n";  // 2: the "for" line
 }  // namespace
 
-// Text lines: magic, "key <hex>", "tokens <hex>", "file <hex> <path>"...,
-// then "check <hex>" = XXH64 of everything before it.
-std::string encode_manifest(const IncludeManifest& manifest) {
+// Text lines: magic, "for <manifest key>", "key <entry key>", "<token hash>",
+// "file <hex> <path>"..., then "check <hex>" = XXH64 of everything before it.
+std::string encode_manifest(const std::string& key, const IncludeManifest& manifest) {
   std::string out(kManifestMagic);
+  out += "for " + key + "\n";
   out += "key " + manifest.entry_key + "\n";
   out += fmt_hex(manifest.token_hash) + "\n";
   for (const auto& [path, hash] : manifest.files) out += "file " + fmt_hex(hash) + " " + path + "\n";
@@ -184,38 +202,53 @@ std::string encode_manifest(const IncludeManifest& manifest) {
   return out;
 }
 
-std::optional<IncludeManifest> decode_manifest(std::string_view bytes) {
+namespace {
+
+// One line of a manifest's body after the magic; false when malformed.
+bool read_manifest_line(std::string_view line, int line_no, std::string& bound_key, IncludeManifest& m) {
+  if (line_no == 0) {
+    if (!line.starts_with("for ")) return false;
+    bound_key = std::string(line.substr(4));
+  } else if (line_no == 1) {
+    if (!line.starts_with("key ")) return false;
+    m.entry_key = std::string(line.substr(4));
+  } else if (line_no == 2) {
+    auto h = parse_hex(line);
+    if (!h) return false;
+    m.token_hash = *h;
+  } else {
+    if (!line.starts_with("file ") || line.size() < 22 || line[21] != ' ') return false;
+    auto h = parse_hex(line.substr(5, 16));
+    if (!h) return false;
+    m.files.emplace_back(std::string(line.substr(22)), *h);
+  }
+  return true;
+}
+
+}  // namespace
+
+Result<IncludeManifest> decode_manifest(std::string_view bytes, const std::string& key) {
   size_t check = bytes.rfind("check ");
   if (!bytes.starts_with(kManifestMagic) || check == std::string_view::npos || !bytes.ends_with("\n")) {
-    return std::nullopt;
+    return failure("not a facet include manifest of this version");
   }
   std::string_view body = bytes.substr(0, check);
   auto stated = parse_hex(bytes.substr(check + 6, bytes.size() - check - 7));
-  if (!stated || *stated != XXH64(body.data(), body.size(), kChecksumSeed)) return std::nullopt;
+  if (!stated || *stated != XXH64(body.data(), body.size(), kChecksumSeed)) {
+    return failure("truncated or altered (its checksum does not match)");
+  }
   IncludeManifest m;
+  std::string bound_key;
   size_t pos = kManifestMagic.size();
   int line_no = 0;
   while (pos < body.size()) {
     size_t eol = body.find('\n', pos);
-    if (eol == std::string_view::npos) return std::nullopt;
-    std::string_view line = body.substr(pos, eol - pos);
+    if (eol == std::string_view::npos) return failure("malformed");
+    if (!read_manifest_line(body.substr(pos, eol - pos), line_no++, bound_key, m)) return failure("malformed");
     pos = eol + 1;
-    if (line_no == 0) {
-      if (!line.starts_with("key ")) return std::nullopt;
-      m.entry_key = std::string(line.substr(4));
-    } else if (line_no == 1) {
-      auto h = parse_hex(line);
-      if (!h) return std::nullopt;
-      m.token_hash = *h;
-    } else {
-      if (!line.starts_with("file ") || line.size() < 22 || line[21] != ' ') return std::nullopt;
-      auto h = parse_hex(line.substr(5, 16));
-      if (!h) return std::nullopt;
-      m.files.emplace_back(std::string(line.substr(22)), *h);
-    }
-    ++line_no;
   }
-  if (line_no < 2) return std::nullopt;
+  if (line_no < 3) return failure("malformed");
+  if (bound_key != key) return failure(fmt::format("it was stored under another key ({})", bound_key));
   return m;
 }
 

@@ -1,4 +1,4 @@
-// The bazel-remote HTTP backend (libcurl), and the local + remote pair.
+// The bazel-remote HTTP backend (libcurl).
 #include <curl/curl.h>
 #include <fmt/format.h>
 #include <openssl/sha.h>
@@ -17,10 +17,21 @@ void init_curl_once() {
   std::call_once(once, [] { curl_global_init(CURL_GLOBAL_DEFAULT); });
 }
 
+// A response body of at most `limit` bytes; past it the transfer stops and
+// `too_large` is set.
+struct Download {
+  std::string body;
+  uint64_t limit = 0;
+  bool too_large = false;
+};
+
 size_t append_body(char* data, size_t size, size_t count, void* user) {
-  auto* body = static_cast<std::string*>(user);
-  if (body->size() + size * count > (size_t(1) << 30)) return 0;  // refuse absurd bodies
-  body->append(data, size * count);
+  auto* down = static_cast<Download*>(user);
+  if (down->body.size() + size * count > down->limit) {
+    down->too_large = true;
+    return 0;  // curl ends the transfer with a write error
+  }
+  down->body.append(data, size * count);
   return size * count;
 }
 
@@ -37,23 +48,26 @@ size_t read_body(char* buffer, size_t size, size_t count, void* user) {
   return n;
 }
 
-// GET: the body on 200, else nullopt.
-std::optional<std::string> http_get(const std::string& url, long timeout_ms) {
+// GET: the body on 200, else nullopt; `too_large` when it was longer than `limit`.
+std::optional<std::string> http_get(const std::string& url, long timeout_ms, uint64_t limit, bool& too_large) {
   init_curl_once();
   CURL* curl = curl_easy_init();
   if (!curl) return std::nullopt;
-  std::string body;
+  Download down{.limit = limit};
   curl_easy_setopt(curl, CURLOPT_URL, url.c_str());
   curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, append_body);
-  curl_easy_setopt(curl, CURLOPT_WRITEDATA, &body);
+  curl_easy_setopt(curl, CURLOPT_WRITEDATA, &down);
+  // Refused before the body when the server states its length.
+  curl_easy_setopt(curl, CURLOPT_MAXFILESIZE_LARGE, curl_off_t(limit));
   curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, timeout_ms);
   curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
   CURLcode rc = curl_easy_perform(curl);
   long status = 0;
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &status);
   curl_easy_cleanup(curl);
+  too_large = down.too_large || rc == CURLE_FILESIZE_EXCEEDED;
   if (rc != CURLE_OK || status != 200) return std::nullopt;
-  return body;
+  return std::move(down.body);
 }
 
 bool http_put(const std::string& url, std::string_view bytes, long timeout_ms) {
@@ -61,7 +75,7 @@ bool http_put(const std::string& url, std::string_view bytes, long timeout_ms) {
   CURL* curl = curl_easy_init();
   if (!curl) return false;
   Upload up{bytes};
-  std::string ignored;
+  Download ignored{.limit = 1 << 20};
   curl_easy_setopt(curl, CURLOPT_URL, url.c_str());
   curl_easy_setopt(curl, CURLOPT_UPLOAD, 1L);
   curl_easy_setopt(curl, CURLOPT_READFUNCTION, read_body);
@@ -98,38 +112,35 @@ HttpCache::HttpCache(std::string base_url, long timeout_ms) : base_url_(std::mov
   while (!base_url_.empty() && base_url_.back() == '/') base_url_.pop_back();
 }
 
-std::optional<std::string> HttpCache::load_bytes(const std::string& key) const {
-  auto digest = http_get(base_url_ + "/ac/" + sha256_hex(key), timeout_ms_);
-  if (!digest || !is_hex64(*digest)) return std::nullopt;
-  auto bytes = http_get(base_url_ + "/cas/" + *digest, timeout_ms_);
-  if (!bytes || sha256_hex(*bytes) != *digest) return std::nullopt;  // content-addressed: check the name
-  return bytes;
+StoredBytes HttpCache::load_bytes(const std::string& key) const {
+  const std::string ac = base_url_ + "/ac/" + sha256_hex(key);
+  StoredBytes out{.location = fmt::format("{} (remote {})", key, ac)};
+  bool too_large = false;
+  auto digest = http_get(ac, timeout_ms_, 64, too_large);
+  if (!digest && !too_large) return out;  // a miss, or the server is down
+  if (!digest || !is_hex64(*digest)) {
+    out.problem = "the action-cache value is not a digest";
+    return out;
+  }
+  auto bytes = http_get(base_url_ + "/cas/" + *digest, timeout_ms_, kMaxEntryBytes, too_large);
+  if (!bytes) {
+    if (too_large) out.problem = fmt::format("its blob is over the limit of {} bytes", kMaxEntryBytes);
+    return out;
+  }
+  if (sha256_hex(*bytes) != *digest) {  // content-addressed: check the name
+    out.problem = "its blob does not hash to its name";
+    return out;
+  }
+  out.bytes = std::move(bytes);
+  return out;
 }
 
 bool HttpCache::store_bytes(const std::string& key, std::string_view bytes) const {
+  if (bytes.size() > kMaxEntryBytes) return false;  // no reader would take it
   std::string digest = sha256_hex(bytes);
   // The blob first, so that an action-cache entry never names a missing blob.
   return http_put(base_url_ + "/cas/" + digest, bytes, timeout_ms_) &&
          http_put(base_url_ + "/ac/" + sha256_hex(key), digest, timeout_ms_);
-}
-
-std::optional<std::string> CacheStores::load_bytes(const std::string& key, bool* remote_hit) const {
-  if (remote_hit) *remote_hit = false;
-  if (local) {
-    if (auto bytes = local->load_bytes(key)) return bytes;
-  }
-  if (!remote) return std::nullopt;
-  auto bytes = remote->load_bytes(key);
-  if (bytes) {
-    if (remote_hit) *remote_hit = true;
-    if (local) (void)local->store_bytes(key, *bytes);
-  }
-  return bytes;
-}
-
-void CacheStores::store_bytes(const std::string& key, std::string_view bytes) const {
-  if (local) (void)local->store_bytes(key, bytes);
-  if (remote) (void)remote->store_bytes(key, bytes);
 }
 
 }  // namespace facet::cache

@@ -34,7 +34,9 @@ struct StageTask {
   std::vector<std::string> keywords;  // the keywords the stage sees
   uint64_t text_hash = 0;             // of the preprocessed tokens
   std::string cache_key;              // hex; set when preprocessing succeeded
+  std::string manifest_key;           // hex, of its include manifest; set with a cache
   bool preprocessed = false;
+  bool key_from_manifest = false;     // cache_key and text_hash came from the include manifest
   size_t compiled_by = SIZE_MAX;      // the task whose compile this one reuses (itself when first)
   StageEntry entry;
 };
@@ -60,9 +62,19 @@ struct BuildContext {
 
 Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector<variants::VariantKey>> keys);
 
+struct PreprocessCounters {
+  uint64_t manifest_hits = 0;
+  std::vector<std::string> cache_problems;  // include manifests that were found but not used, and why
+};
+
 // Preprocesses every task (or takes its key from a current include
-// manifest) and sets its token hash and cache key. Returns the manifest hits.
-uint64_t preprocess_tasks(const BuildContext& ctx, Plan& plan);
+// manifest) and sets its token hash and cache key.
+PreprocessCounters preprocess_tasks(const BuildContext& ctx, Plan& plan);
+
+// Preprocesses one task even though its include manifest was current: the
+// manifest named another program's entry. Rewrites the manifest; false when
+// preprocessing fails.
+bool preprocess_again(const BuildContext& ctx, StageTask& t);
 
 // Tasks whose preprocessed texts are equal compile to the same module: the
 // first of them compiles, the others reuse it. Returns how many compile.
@@ -73,6 +85,7 @@ std::vector<size_t> compiling_tasks(const Plan& plan);
 
 struct CompileCounters {
   uint64_t hits = 0, remote_hits = 0, corrupt = 0;
+  std::vector<std::string> cache_problems;  // entries that were found but not used, and why; sorted
 };
 
 // Compiles the tasks `which` (or takes them from the cache) in parallel.

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <xxhash.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <set>
@@ -91,6 +92,23 @@ cache::CacheStores cache_stores(const CompileOptions& options) {
   if (!options.cache_dir.empty()) stores.local.emplace(options.cache_dir);
   if (!options.cache_url.empty()) stores.remote.emplace(options.cache_url);
   return stores;
+}
+
+// Warnings for the cache entries and include manifests that were found but
+// not used; a cache never fails a build, so they are warnings, a handful
+// each, then a count.
+void report_cache_problems(const std::vector<std::string>& manifests, const std::vector<std::string>& entries,
+                           Diagnostics& diags) {
+  constexpr size_t kShown = 20;
+  std::vector<std::string> all = manifests;
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  all.insert(all.end(), entries.begin(), entries.end());
+  for (size_t i = 0; i < all.size() && i < kShown; ++i) diags.add(DiagId::io_cannot_read, Severity::warning, {}, all[i]);
+  if (all.size() > kShown) {
+    diags.add(DiagId::io_cannot_read, Severity::warning, {},
+              fmt::format("{} more corrupt cache entries or include manifests were not used", all.size() - kShown));
+  }
 }
 
 // Phase 3: the package, sequentially in key order. false on compile errors.
@@ -214,9 +232,10 @@ Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOp
   Plan plan;
   plan.keys.resize(1);
   plan.tasks.push_back({.pass = 0, .stage = job.stage, .keywords = job.keywords});
-  driver::preprocess_tasks(ctx, plan);
+  driver::PreprocessCounters preprocessed = driver::preprocess_tasks(ctx, plan);
   driver::assign_compilers(one, plan.tasks);
   CompileCounters counters = driver::compile_tasks(ctx, plan, {0});
+  report_cache_problems(preprocessed.cache_problems, counters.cache_problems, diags);
   diags.append(plan.tasks[0].entry.diags);
   if (!plan.tasks[0].entry.ok) return failure("compile errors");
   return counters.hits == 0;
@@ -272,12 +291,13 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   const BuildContext ctx{shader, options, sources, backend_, *passes, stores, driver::worker_count(options.jobs)};
   Plan plan = driver::plan_tasks(*passes, std::move(*keys));
   phases.select = seconds_since_lap();
-  uint64_t manifest_hits = driver::preprocess_tasks(ctx, plan);
+  driver::PreprocessCounters preprocessed = driver::preprocess_tasks(ctx, plan);
   size_t compiling = driver::assign_compilers(*passes, plan.tasks);
   std::vector<size_t> to_compile = driver::compiling_tasks(plan);
   phases.preprocess = seconds_since_lap();
   CompileCounters counters = driver::compile_tasks(ctx, plan, to_compile);
   phases.compile = seconds_since_lap();
+  report_cache_problems(preprocessed.cache_problems, counters.cache_problems, diags);
 
   CompiledShader out;
   if (!assemble_package(ctx, plan, out, diags)) return failure("compile errors");
@@ -290,7 +310,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.unique_preprocessed = compiling;
   out.stats.cache_hits = counters.hits;
   out.stats.cache_remote_hits = counters.remote_hits;
-  out.stats.preprocess_skipped = manifest_hits;
+  out.stats.preprocess_skipped = preprocessed.manifest_hits;
   out.stats.cache_corrupt = counters.corrupt;
   out.stats.compiled = to_compile.size() - counters.hits;
   out.stats.unique_spirv = pkg.spirv_blobs.size();

@@ -1,6 +1,7 @@
 // Phase 2: compile each distinct stage program once, or take it from the cache.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -37,7 +38,8 @@ CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::ve
   const CompileOptions& options = ctx.options;
   const bool store = ctx.stores.any();
   std::atomic<uint64_t> hits{0}, corrupt{0}, remote_hits{0};
-  std::mutex progress_mutex;
+  std::mutex progress_mutex, problems_mutex;
+  std::vector<std::string> problems;
   uint64_t finished = 0;
   auto report_progress = [&] {
     if (!options.progress) return;
@@ -57,18 +59,28 @@ CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::ve
     auto begin = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     if (store && !t.cache_key.empty()) {
-      bool from_remote = false;
-      std::optional<std::string> bytes = ctx.stores.load_bytes(t.cache_key, &from_remote);
-      std::optional<cache::CacheEntry> cached = bytes ? cache::decode_entry(*bytes) : std::nullopt;
-      corrupt += bytes.has_value() && !cached;
-      if (cached) {
+      cache::EntryLookup found = ctx.stores.load_entry(t.cache_key, t.text_hash);
+      if (found.other_program && t.key_from_manifest) {
+        // The include manifest named another program's entry: the key is
+        // wrong, so preprocess after all (which rewrites the manifest) and
+        // look up the real key; a failed preprocess stores nothing.
+        std::vector<std::string> problems = std::move(found.problems);
+        found = preprocess_again(ctx, t) ? ctx.stores.load_entry(t.cache_key, t.text_hash) : cache::EntryLookup{};
+        found.problems.insert(found.problems.begin(), problems.begin(), problems.end());
+      }
+      if (!found.problems.empty()) {
+        ++corrupt;
+        std::lock_guard lock(problems_mutex);
+        problems.insert(problems.end(), found.problems.begin(), found.problems.end());
+      }
+      if (found.entry) {
         ++hits;
-        remote_hits += from_remote;
+        remote_hits += found.remote;
         e.ok = e.cache_hit = true;
         e.seconds = elapsed();
-        e.spirv = std::move(cached->spirv);
-        e.reflection = std::move(cached->reflection);
-        e.included_files = std::move(cached->included_files);
+        e.spirv = std::move(found.entry->spirv);
+        e.reflection = std::move(found.entry->reflection);
+        e.included_files = std::move(found.entry->included_files);
         return;
       }
     }
@@ -83,10 +95,11 @@ CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::ve
     e.included_files = std::move(compiled->included_files);
     // Only clean compiles are stored: a hit replays no diagnostics.
     if (store && !t.cache_key.empty() && e.diags.size() == 0) {
-      ctx.stores.store_bytes(t.cache_key, cache::encode_entry({e.spirv, e.reflection, e.included_files}));
+      ctx.stores.store_entry(t.cache_key, {e.spirv, e.reflection, e.included_files, t.text_hash});
     }
   });
-  return {hits, remote_hits, corrupt};
+  std::sort(problems.begin(), problems.end());  // the same order whichever thread finished first
+  return {hits, remote_hits, corrupt, std::move(problems)};
 }
 
 }  // namespace facet::driver

@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 
 #include "driver/build_plan.h"
@@ -85,29 +84,32 @@ std::string search_context(const ir::Shader& shader, const backend::BackendOptio
 }
 
 // Content hashes of files, each read once per build; safe across threads.
+// A listed file that is not a regular file, or is too large to hash, has no
+// hash (its manifest is stale) and a problem naming it.
 class FileHashes {
  public:
-  std::optional<uint64_t> of(const std::string& path) {
+  cache::FileHash of(const std::string& path) {
     {
       std::lock_guard lock(mutex_);
       if (auto it = hashes_.find(path); it != hashes_.end()) return it->second;
     }
-    std::optional<uint64_t> hash;
-    std::ifstream in(path, std::ios::binary);
-    if (in) {
-      std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      hash = XXH3_64bits(bytes.data(), bytes.size());
-    }
+    cache::FileHash hash = cache::hash_file(path);
     std::lock_guard lock(mutex_);
-    return hashes_.emplace(path, hash).first->second;
+    return hashes_.emplace(path, std::move(hash)).first->second;
   }
-  bool unchanged(const std::vector<std::pair<std::string, uint64_t>>& files) {
-    return std::all_of(files.begin(), files.end(), [&](const auto& f) { return of(f.first) == f.second; });
+  // Whether every listed file still hashes the same; the first refused file's problem otherwise.
+  bool unchanged(const std::vector<std::pair<std::string, uint64_t>>& files, std::string& problem) {
+    for (const auto& [path, hash] : files) {
+      cache::FileHash now = of(path);
+      if (!now.problem.empty()) problem = fmt::format("it lists '{}': {}", path, now.problem);
+      if (now.hash != hash) return false;
+    }
+    return true;
   }
 
  private:
   std::mutex mutex_;
-  std::map<std::string, std::optional<uint64_t>> hashes_;
+  std::map<std::string, cache::FileHash> hashes_;
 };
 
 std::string hex_key(const std::string& context, const std::string& tokens) {
@@ -145,7 +147,7 @@ Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector
 // Tasks whose preprocessed texts are equal compile to the same module: the
 // first of them compiles, the others reuse it. Returns how many compile.
 size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<StageTask>& tasks) {
-  std::map<std::tuple<Stage, ir::ProgramLanguage, std::string, uint64_t>, size_t> first;
+  std::map<std::tuple<Stage, ir::ProgramLanguage, std::string, uint64_t, std::string>, size_t> first;
   size_t compiling = 0;
   for (size_t i = 0; i < tasks.size(); ++i) {
     StageTask& t = tasks[i];
@@ -155,7 +157,10 @@ size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<Sta
       ++compiling;
       continue;
     }
-    auto id = std::make_tuple(t.stage, program.language, program.entry_points[size_t(t.stage)], t.text_hash);
+    // The key too: tasks whose include manifests disagree about it are not
+    // merged on the token hash alone (one of the manifests is wrong).
+    auto id = std::make_tuple(t.stage, program.language, program.entry_points[size_t(t.stage)], t.text_hash,
+                              t.cache_key);
     auto [it, inserted] = first.try_emplace(id, i);
     t.compiled_by = it->second;
     compiling += inserted;
@@ -171,58 +176,101 @@ std::vector<size_t> compiling_tasks(const Plan& plan) {
   return out;
 }
 
-uint64_t preprocess_tasks(const BuildContext& ctx, Plan& plan) {
+namespace {
+
+// Direct mode: the task's key from a current include manifest. false when
+// there is none (or it is stale, or unusable: `problems` says why).
+bool key_from_manifest(const BuildContext& ctx, StageTask& t, FileHashes& file_hashes,
+                       std::vector<std::string>& problems) {
+  cache::ManifestLookup found = ctx.stores.load_manifest(t.manifest_key);
+  problems.insert(problems.end(), found.problems.begin(), found.problems.end());
+  if (!found.manifest) return false;
+  std::string refused;
+  bool current = file_hashes.unchanged(found.manifest->files, refused);
+  if (!refused.empty()) {
+    problems.push_back(fmt::format("unusable include manifest '{}': {}; the program is preprocessed instead",
+                                   found.location, refused));
+  }
+  if (!current) return false;
+  t.preprocessed = true;
+  t.key_from_manifest = true;
+  t.text_hash = found.manifest->token_hash;
+  t.cache_key = found.manifest->entry_key;
+  return true;
+}
+
+// Preprocesses the task: its token hash and cache key, and with a cache its
+// include manifest (under t.manifest_key).
+void preprocess_task(const BuildContext& ctx, StageTask& t, FileHashes& file_hashes) {
+  const CompileOptions& options = ctx.options;
+  const ir::Program& program = *ctx.passes[t.pass].ir->program;
+  Diagnostics ignored;  // the compile reports the same problems with more context
+  std::vector<std::string> included;
+  auto text = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, true, ctx.sources,
+                                      ignored, &included);
+  if (!text) return;
+  t.preprocessed = true;
+  t.key_from_manifest = false;
+  std::string tokens = token_text(*text, options.backend.debug_info);
+  // Stage relevance: only what this stage's entry point reaches counts
+  // (GLSL programs are already split per stage by #ifdef VERTEX/FRAGMENT;
+  // with -g the module embeds the whole source, so all of it counts).
+  if (program.language != ir::ProgramLanguage::glsl && !options.backend.debug_info) {
+    tokens = reachable_text(tokens, program.entry_points[size_t(t.stage)]);
+  }
+  t.text_hash = XXH3_64bits(tokens.data(), tokens.size());
+  t.cache_key = hex_key(key_context(ctx.shader, program, t.stage, options.backend), tokens);
+  if (t.manifest_key.empty()) return;
+  cache::IncludeManifest manifest{.entry_key = t.cache_key, .token_hash = t.text_hash};
+  for (const std::string& path : included) {
+    if (auto h = file_hashes.of(path).hash) manifest.files.emplace_back(path, *h);
+  }
+  if (manifest.files.size() == included.size()) ctx.stores.store_manifest(t.manifest_key, manifest);
+}
+
+}  // namespace
+
+PreprocessCounters preprocess_tasks(const BuildContext& ctx, Plan& plan) {
   const CompileOptions& options = ctx.options;
   const bool store = ctx.stores.any();
   FileHashes file_hashes;
   std::atomic<uint64_t> manifest_hits{0};
+  std::mutex problems_mutex;
+  std::vector<std::string> problems;
   parallel_for_each(plan.tasks.size(), ctx.jobs, [&](size_t i) {
     StageTask& t = plan.tasks[i];
     const ir::Program& program = *ctx.passes[t.pass].ir->program;
-    Diagnostics ignored;  // the compile reports the same problems with more context
-    const std::string context = key_context(ctx.shader, program, t.stage, options.backend);
-    std::string manifest_key;
     if (store) {
       // Direct mode: the text before preprocessing and the files it read last time.
+      Diagnostics ignored;
       auto assembled = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, false,
                                                ctx.sources, ignored);
-      manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), *assembled);
-      if (auto bytes = ctx.stores.load_bytes(manifest_key)) {
-        auto manifest = cache::decode_manifest(*bytes);
-        if (manifest && file_hashes.unchanged(manifest->files)) {
-          t.preprocessed = true;
-          t.text_hash = manifest->token_hash;
-          t.cache_key = manifest->entry_key;
-          ++manifest_hits;
-          return;
-        }
+      const std::string context = key_context(ctx.shader, program, t.stage, options.backend);
+      if (assembled) {
+        t.manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), *assembled);
+      }
+      std::vector<std::string> found;
+      bool hit = assembled && key_from_manifest(ctx, t, file_hashes, found);
+      if (!found.empty()) {
+        std::lock_guard lock(problems_mutex);
+        problems.insert(problems.end(), found.begin(), found.end());
+      }
+      if (hit) {
+        ++manifest_hits;
+        return;
       }
     }
-    std::vector<std::string> included;
-    auto text = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, true, ctx.sources,
-                                        ignored, &included);
-    if (!text) return;
-    t.preprocessed = true;
-    std::string tokens = token_text(*text, options.backend.debug_info);
-    // Stage relevance: only what this stage's entry point reaches counts
-    // (GLSL programs are already split per stage by #ifdef VERTEX/FRAGMENT;
-    // with -g the module embeds the whole source, so all of it counts).
-    if (program.language != ir::ProgramLanguage::glsl && !options.backend.debug_info) {
-      tokens = reachable_text(tokens, program.entry_points[size_t(t.stage)]);
-    }
-    t.text_hash = XXH3_64bits(tokens.data(), tokens.size());
-    t.cache_key = hex_key(context, tokens);
-    if (store) {
-      cache::IncludeManifest manifest{.entry_key = t.cache_key, .token_hash = t.text_hash};
-      for (const std::string& path : included) {
-        if (auto h = file_hashes.of(path)) manifest.files.emplace_back(path, *h);
-      }
-      if (manifest.files.size() == included.size()) {
-        ctx.stores.store_bytes(manifest_key, cache::encode_manifest(manifest));
-      }
-    }
+    preprocess_task(ctx, t, file_hashes);
   });
-  return manifest_hits;
+  return {manifest_hits, std::move(problems)};
+}
+
+bool preprocess_again(const BuildContext& ctx, StageTask& t) {
+  FileHashes file_hashes;
+  t.preprocessed = false;
+  t.cache_key.clear();  // the manifest's key is wrong: without a new one nothing is stored
+  preprocess_task(ctx, t, file_hashes);
+  return t.preprocessed;
 }
 
 }  // namespace facet::driver

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "check_reports.h"
+#include "output_safety.h"
 #include "units.h"
 
 namespace facet::tools {
@@ -208,6 +209,15 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
   }
   if (!args.sarif_file.empty()) {
     if (auto e = report_path_problem("SARIF", args.sarif_file)) errors.push_back(*e);
+  }
+  if (errors.empty()) {
+    // Found before anything compiles; includes are not known yet, so the
+    // reports are checked against the shaders and the materials and strip files.
+    std::vector<RunInput> inputs;
+    add_inputs(inputs, paths, "a shader");
+    add_inputs(inputs, args.material_files, "a materials file");
+    add_inputs(inputs, args.strip_files, "a strip filter");
+    if (auto clash = output_input_clash({args.junit_file, args.sarif_file}, inputs)) errors.push_back(*clash);
   }
   if (!errors.empty()) {
     for (const std::string& e : errors) console.err << "facetc: error: " << e << "\n";

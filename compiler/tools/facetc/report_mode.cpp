@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "facet/report.h"
+#include "output_safety.h"
 #include "units.h"
 
 namespace facet::tools {
@@ -67,9 +68,10 @@ CompileOptions stripped_options(CompileOptions options, const StripInputs& strip
 
 namespace {
 
+// `read` gains every file the shader's build read (itself and its includes).
 std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Compiler& compiler,
                                                const std::string& path, const StripInputs& strip, Console& console,
-                                               nlohmann::json& json_diagnostics) {
+                                               nlohmann::json& json_diagnostics, std::vector<std::string>& read) {
   SourceMap sources;
   Diagnostics diags;
   std::optional<report::ShaderReport> result;
@@ -86,6 +88,7 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
     if (passes) {
       if (auto c = compiler.compile(*shader, options, sources, diags)) compiled = std::move(*c);
     }
+    if (compiled) read.insert(read.end(), compiled->dependencies.begin(), compiled->dependencies.end());
     if (compiled && !apply_warning_options(diags, args.warnings).has_errors()) {
       report::ReportOptions report_options;
       if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
@@ -93,6 +96,7 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
       if (estimate) result->estimate = *estimate;
     }
   }
+  for (FileId id = 0; id < sources.file_count(); ++id) read.push_back(sources.path(id));
   show_diagnostics(args, diags, sources, console, json_diagnostics);
   return result;
 }
@@ -103,8 +107,14 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
                nlohmann::json& json_diagnostics) {
   bool failed = false;
   std::vector<report::ShaderReport> reports;
+  std::vector<RunInput> inputs;
+  add_inputs(inputs, args.material_files, "a materials file");
+  add_inputs(inputs, args.strip_files, "a strip filter");
   for (const std::string& path : expand_inputs(args.inputs)) {
-    auto r = report_one(args, compiler, path, strip, console, json_diagnostics);
+    std::vector<std::string> read;
+    auto r = report_one(args, compiler, path, strip, console, json_diagnostics, read);
+    inputs.push_back({path, "a shader"});
+    add_inputs(inputs, read, "a file the build read");
     if (r) reports.push_back(std::move(*r));
     failed |= !r;
   }
@@ -116,7 +126,7 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
     console.out << text;
   } else {
     Diagnostics diags;
-    if (!write_file_atomically(args.output, text, diags)) {
+    if (!outputs_spare_inputs({args.output}, inputs, diags) || !write_file_atomically(args.output, text, diags)) {
       show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
       return 1;
     }

@@ -17,6 +17,7 @@
 #include "facet/shaderlab.h"
 #include "check_mode.h"
 #include "jobs.h"
+#include "output_safety.h"
 #include "progress.h"
 #include "report_mode.h"
 #include "strip_filter.h"
@@ -32,6 +33,9 @@ struct Produced {
   std::vector<uint8_t> package;  // a binary package, written instead of `bytes` when not empty
   std::string output;  // where: a path, or "" / "-" for standard output
   std::string stats;   // the --stats line, if any
+  // Files the compile read besides those in the SourceMap (the includes of
+  // programs that came from the cache).
+  std::vector<std::string> dependencies;
   bool usage_error = false;
 };
 
@@ -84,7 +88,7 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
   double encode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - encode_started).count();
   const CompileStats& s = compiled->stats;
-  Produced out{.output = package_output_path(args, input)};
+  Produced out{.output = package_output_path(args, input), .dependencies = compiled->dependencies};
   out.stats = fmt::format("facetc: {}: {} passes, {} variants ({} stripped); programs {}, unique after preprocessing {} "
                           "(compiled once each), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
                           input, s.passes, s.variants, s.variants_stripped, s.stage_programs, s.unique_preprocessed,
@@ -200,10 +204,14 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
 }
 
 // Every real file the input read: itself first, then its includes, sorted.
-std::vector<std::string> dependencies(const std::string& input, const SourceMap& sources) {
+std::vector<std::string> dependencies(const std::string& input, const SourceMap& sources,
+                                      const std::vector<std::string>& also_read) {
   std::vector<std::string> deps;
   for (FileId id = 0; id < sources.file_count(); ++id) {
     const std::string& path = sources.path(id);
+    if (!path.starts_with("<") && path != input) deps.push_back(path);
+  }
+  for (const std::string& path : also_read) {
     if (!path.starts_with("<") && path != input) deps.push_back(path);
   }
   std::sort(deps.begin(), deps.end());
@@ -214,12 +222,44 @@ std::vector<std::string> dependencies(const std::string& input, const SourceMap&
 
 bool to_stdout(const std::string& output) { return output.empty() || output == "-"; }
 
-// Writes the output, then the depfile; false (with a diagnostic) on I/O failure.
+// The files this run reads for `input`: the shaders named on the command
+// line, the input's includes and those of the inputs before it, the
+// materials and strip files.
+std::vector<RunInput> run_inputs(const FacetcArgs& args, const std::string& input,
+                                 const std::vector<std::string>& deps, const std::vector<std::string>& read_before) {
+  std::vector<RunInput> inputs{{input, "the shader"}};
+  add_inputs(inputs, std::vector<std::string>(deps.begin() + 1, deps.end()), "an include file");
+  add_inputs(inputs, args.inputs, "a shader of this run");
+  add_inputs(inputs, read_before, "a file an earlier input read");
+  add_inputs(inputs, args.material_files, "a materials file");
+  add_inputs(inputs, args.strip_files, "a strip filter");
+  return inputs;
+}
+
+// Every file write_outputs would write (standard output is none).
+std::vector<std::string> output_paths(const FacetcArgs& args, const Produced& produced) {
+  if (args.mode == Mode::depfile_only) return {args.depfile};
+  std::vector<std::string> out{to_stdout(produced.output) ? "" : produced.output};
+  if (args.write_depfile) out.push_back(!args.depfile.empty() ? args.depfile : produced.output + ".d");
+  return out;
+}
+
+// Writes the output, then the depfile; false (with a diagnostic) on I/O
+// failure, or when an output is an input of the run (then nothing is
+// written: the check runs after the compile, which found the includes).
+// `read_before` gains the files this input read.
 bool write_outputs(const FacetcArgs& args, const std::string& input, const Produced& produced,
-                   const SourceMap& sources, Console& console, Diagnostics& diags) {
+                   const SourceMap& sources, Console& console, Diagnostics& diags,
+                   std::vector<std::string>& read_before) {
+  std::vector<std::string> deps = dependencies(input, sources, {});
+  // The includes of programs that came from the cache count as inputs too.
+  std::vector<std::string> read = dependencies(input, sources, produced.dependencies);
+  std::vector<RunInput> inputs = run_inputs(args, input, read, read_before);
+  read_before.insert(read_before.end(), read.begin(), read.end());
+  if (!outputs_spare_inputs(output_paths(args, produced), inputs, diags)) return false;
   std::string target = !args.dep_target.empty() ? args.dep_target
                        : to_stdout(produced.output) ? package_output_path(args, input) : produced.output;
-  std::string rule = make_rule(target, dependencies(input, sources));
+  std::string rule = make_rule(target, deps);
   if (args.mode == Mode::depfile_only) {
     if (args.depfile.empty()) {
       console.out << rule;
@@ -268,14 +308,16 @@ std::optional<StripInputs> read_strip_inputs(const FacetcArgs& args, Console& co
 }
 
 // One input, start to end. Returns its exit code.
+// `read_before`: the files the inputs before this one read (and this one's, after).
 int process_input(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
-                  const std::string& input, Console& console, nlohmann::json& json_diagnostics) {
+                  const std::string& input, Console& console, nlohmann::json& json_diagnostics,
+                  std::vector<std::string>& read_before) {
   SourceMap sources;
   Diagnostics raw;
   Result<Produced> produced = produce(args, compiler, strip, input, sources, raw);
   Diagnostics diags = apply_warning_options(raw, args.warnings);
   bool ok = produced && !produced->usage_error && !diags.has_errors();
-  if (ok && !write_outputs(args, input, *produced, sources, console, diags)) ok = false;
+  if (ok && !write_outputs(args, input, *produced, sources, console, diags, read_before)) ok = false;
   show_diagnostics(args, diags, sources, console, json_diagnostics);
   if (ok && args.stats) console.err << produced->stats;
   if (produced && produced->usage_error) return 2;
@@ -294,8 +336,10 @@ int run_merge(const FacetcArgs& args, Console& console, nlohmann::json& json_dia
     shards.push_back(std::move(*pkg));
   }
   Diagnostics diags;
+  std::vector<RunInput> inputs;
+  add_inputs(inputs, args.inputs, "a package being merged");
   auto merged = package::merge_packages(shards, diags);
-  bool ok = merged && write_file_atomically(args.output, [&] {
+  bool ok = merged && outputs_spare_inputs({args.output}, inputs, diags) && write_file_atomically(args.output, [&] {
     std::vector<uint8_t> bytes = package::write_package(*merged);
     return std::string(bytes.begin(), bytes.end());
   }(), diags);
@@ -337,8 +381,10 @@ int run_facetc(const FacetcArgs& args, Console& console) {
     if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
     return exit_code;
   }
+  std::vector<std::string> read_before;
   for (const std::string& input : args.inputs) {
-    exit_code = std::max(exit_code, process_input(args, compiler, *strip, input, console, json_diagnostics));
+    exit_code =
+        std::max(exit_code, process_input(args, compiler, *strip, input, console, json_diagnostics, read_before));
   }
   if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
   return exit_code;

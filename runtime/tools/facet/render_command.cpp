@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <ostream>
 
 #include "facet/commands.h"
@@ -18,6 +20,52 @@ struct RenderArgs {
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false;
 };
+
+// A file the render reads, and what it is to the scene, for the error.
+struct SceneInput {
+  std::string path;
+  std::string what;
+};
+
+void add_texture(std::vector<SceneInput>& inputs, const std::optional<runtime::SceneTexture>& texture) {
+  if (texture && !texture->builtin) inputs.push_back({texture->name, "a texture of the scene"});
+}
+
+void add_material(std::vector<SceneInput>& inputs, const runtime::SceneMaterial& material) {
+  inputs.push_back({material.shader, "a shader of the scene"});
+  for (const runtime::SceneProperty& p : material.properties) add_texture(inputs, p.texture);
+}
+
+// The scene file, and every mesh, shader and texture file it names.
+std::vector<SceneInput> scene_inputs(const std::string& scene_path, const runtime::Scene& scene) {
+  std::vector<SceneInput> inputs{{scene_path, "the scene"}};
+  for (const runtime::SceneObject& o : scene.objects) {
+    if (!o.builtin_mesh) inputs.push_back({o.mesh, "a mesh of the scene"});
+    add_material(inputs, o.material);
+  }
+  for (const runtime::ScenePostEffect& p : scene.post) add_material(inputs, p.material);
+  for (const runtime::SceneLight& l : scene.lights) add_texture(inputs, l.cookie);
+  return inputs;
+}
+
+// The error for an output that is the same file as an input (compared by
+// device and inode, so another spelling or a hard link counts): writing the
+// image would destroy the input. An output that does not exist yet is none.
+std::optional<std::string> output_clash(const std::vector<std::string>& outputs,
+                                        const std::vector<SceneInput>& inputs) {
+  for (const std::string& output : outputs) {
+    std::error_code ec;
+    if (output.empty() || !std::filesystem::exists(output, ec)) continue;
+    for (const SceneInput& input : inputs) {
+      if (std::filesystem::equivalent(output, input.path, ec)) {
+        return fmt::format("facet render: error: output '{}' is also an input of this render ({}); nothing was "
+                           "written",
+                           output, input.what);
+      }
+    }
+  }
+  return std::nullopt;
+}
 
 void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runtime::Context& context) {
   std::string gpu = f.stats.gpu_ms ? fmt::format("{:.3f} ms", *f.stats.gpu_ms) : std::string("n/a (no timestamps)");
@@ -52,6 +100,10 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   auto scene = runtime::load_scene(a.scene);
   if (!scene) {
     err << scene.error().message << "\n";
+    return 1;
+  }
+  if (auto clash = output_clash({a.png, a.exr}, scene_inputs(a.scene, *scene))) {
+    err << *clash << "\n";
     return 1;
   }
   auto context = runtime::create_context({.device = a.device, .validation = a.validation});

@@ -1,0 +1,80 @@
+// `facet render` refuses an image output that is one of the files the
+// render reads (the scene, a texture, a mesh, a shader): exit 1, a clear
+// error, the input's bytes untouched. The check runs before any GPU work,
+// so these tests need no device. They run the `facet` binary built next to
+// facetc.
+#include "facetc_test_util.h"
+
+namespace facet::tools::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+fs::path facet_binary() { return fs::path(FACETC_PATH).parent_path().parent_path() / "runtime" / "facet"; }
+
+constexpr const char* kScene = R"({
+  "width": 8, "height": 8,
+  "camera": { "position": [0, 0, -3], "look_at": [0, 0, 0] },
+  "objects": [
+    { "mesh": "tri.obj",
+      "material": { "shader": "Diffuse.shader", "properties": { "_MainTex": { "texture": "checker.png" } } } }
+  ]
+}
+)";
+constexpr const char* kMesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+class FacetRenderOutputTest : public FacetcTest {
+ protected:
+  void SetUp() override {
+    FacetcTest::SetUp();
+    if (!fs::exists(facet_binary())) GTEST_SKIP() << "build the facet target: " << facet_binary();
+    write_all(dir_ / "scene.json", kScene);
+    write_all(dir_ / "tri.obj", kMesh);
+    fs::copy_file(example("Diffuse.shader"), dir_ / "Diffuse.shader");
+    fs::copy_file(fs::path(FACET_SOURCE_DIR) / "examples" / "textures" / "checker.png", dir_ / "checker.png");
+  }
+
+  FacetcRun render(const std::vector<std::string>& args) const {
+    std::string command = "cd " + shell_quote(dir_.string()) + " && " + shell_quote(facet_binary().string()) +
+                          " render";
+    for (const std::string& a : args) command += " " + shell_quote(a);
+    command += " >stdout.txt 2>stderr.txt";
+    int status = std::system(command.c_str());
+    FacetcRun run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.err = read_all(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    return run;
+  }
+
+  // The render fails, names `output` as `what`, and `file` keeps its bytes.
+  void expect_refused(const std::vector<std::string>& args, const std::string& output, const std::string& what,
+                      const std::string& file) {
+    std::string before = read_all(dir_ / file);
+    FacetcRun run = render(args);
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    EXPECT_THAT(run.err, HasSubstr("facet render: error: output '" + output + "' is also an input of this render (" +
+                                   what + "); nothing was written"));
+    EXPECT_TRUE(read_all(dir_ / file) == before) << file << " was replaced";
+  }
+};
+
+TEST_F(FacetRenderOutputTest, OutputNamingTheSceneIsRefused) {
+  expect_refused({"scene.json", "-o", "scene.json"}, "scene.json", "the scene", "scene.json");
+  fs::create_directory(dir_ / "x");
+  expect_refused({"scene.json", "-o", "./x/../scene.json"}, "./x/../scene.json", "the scene", "scene.json");
+}
+
+TEST_F(FacetRenderOutputTest, OutputNamingATextureIsRefused) {
+  expect_refused({"scene.json", "-o", "checker.png"}, "checker.png", "a texture of the scene", "checker.png");
+}
+
+TEST_F(FacetRenderOutputTest, OutputsNamingAMeshOrAShaderAreRefused) {
+  expect_refused({"scene.json", "-o", "tri.obj"}, "tri.obj", "a mesh of the scene", "tri.obj");
+  fs::create_hard_link(dir_ / "Diffuse.shader", dir_ / "link.exr");
+  expect_refused({"scene.json", "--exr", "link.exr"}, "link.exr", "a shader of the scene", "Diffuse.shader");
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
