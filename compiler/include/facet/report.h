@@ -35,6 +35,7 @@ struct ReportOptions {
 struct Ladder {
   std::string scope;  // "pass", "vertex", "fragment", ...
   BigCount full, after_skip, after_materials;
+  BigCount reachable;         // after_materials without the unreachable keywords' variants
   bool has_materials = false;
   uint64_t after_strip = 0;   // variants (stage: distinct stage views) left by keyword_rule and --strip
   uint64_t programs = 0;      // distinct (stage, keywords the stage sees) compiled
@@ -75,6 +76,9 @@ struct PassReport {
   std::string name, light_mode;
   std::vector<Ladder> ladders;  // "pass" first, then each stage the program has
   std::vector<KeywordSetRow> sets;
+  // Shortcut keywords facet's renderer never enables (lightmaps, ...):
+  // counted in full, not built unless asked (--build-unreachable).
+  std::vector<std::string> unreachable_keywords;
   std::vector<Finding> findings;
   std::vector<WhatIf> what_ifs;
   std::vector<VariantRow> variants;  // in key order

@@ -23,7 +23,7 @@ Ladder count_ladder(const SelectedPass& pass, std::optional<Stage> stage, const 
   variants::VariantCounts counts = variants::count_variants(pass.keywords, {.stage = stage, .materials = options.materials});
   Ladder ladder{.scope = stage ? std::string(stage_name(*stage)) : "pass", .full = counts.full,
                 .after_skip = counts.after_skip, .after_materials = counts.after_materials,
-                .has_materials = options.materials.has_value()};
+                .reachable = counts.reachable, .has_materials = options.materials.has_value()};
   std::set<std::pair<int, uint64_t>> tokens;
   std::set<uint32_t> blobs;
   for (const ProgramRecord& r : records) {
@@ -98,6 +98,7 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
       pr.ladders.push_back(count_ladder(sel, s, options, compiled.programs, p, pkg.passes[p]));
     }
     pr.sets = set_rows(sel.keywords, *sel.ir->program);
+    pr.unreachable_keywords = sel.keywords.unreachable_keywords;
     pr.variants = variant_rows(sel, pkg.passes[p], pkg, compiled.programs, p);
     std::set<uint32_t> blobs;
     for (const ProgramRecord& r : compiled.programs) {

@@ -56,17 +56,23 @@ std::string set_label(const KeywordSetRow& s) {
 
 std::string ladder_table(const PassReport& p) {
   std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th>"
-                  "<th>after keyword_rule + --strip</th><th>after materials</th>"
+                  "<th>after materials</th><th>reachable</th><th>after keyword_rule + --strip</th>"
                   "<th>after scene needs</th><th>programs</th><th>unique after preprocessing</th>"
                   "<th>unique SPIR-V</th></tr>\n";
   for (const Ladder& l : p.ladders) {
-    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td><td>{}</td>"
-                     "<td>{}</td></tr>\n",
-                     xml_escape(l.scope), l.full.to_string(), l.after_skip.to_string(), l.after_strip,
-                     l.has_materials ? l.after_materials.to_string() : "–", l.programs, l.unique_tokens,
-                     l.unique_spirv);
+    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td>"
+                     "<td>{}</td><td>{}</td></tr>\n",
+                     xml_escape(l.scope), l.full.to_string(), l.after_skip.to_string(),
+                     l.has_materials ? l.after_materials.to_string() : "–", l.reachable.to_string(), l.after_strip,
+                     l.programs, l.unique_tokens, l.unique_spirv);
   }
-  return t + "</table>\n";
+  t += "</table>\n";
+  if (!p.unreachable_keywords.empty()) {
+    t += fmt::format("<p>unreachable: {} (facet's renderer never enables them: counted, not built unless "
+                     "<code>--build-unreachable</code>)</p>\n",
+                     xml_escape(fmt::format("{}", fmt::join(p.unreachable_keywords, " "))));
+  }
+  return t;
 }
 
 std::string pass_section(const PassReport& p) {

@@ -20,6 +20,7 @@ Json count(const BigCount& n) {
 Json ladder_json(const Ladder& l) {
   Json j = {{"scope", l.scope}, {"full", count(l.full)}, {"after_skip_variants", count(l.after_skip)}};
   j["after_materials"] = l.has_materials ? count(l.after_materials) : Json(nullptr);
+  j["reachable"] = count(l.reachable);
   j["after_keyword_rules_and_strip"] = l.after_strip;
   j["after_scene_needs"] = nullptr;  // scenes are the runtime's (facet render --explain)
   j["programs"] = l.programs;
@@ -32,6 +33,7 @@ Json pass_json(const PassReport& p) {
   Json j = {{"index", p.index}, {"name", p.name}, {"light_mode", p.light_mode}};
   j["ladder"] = Json::array();
   for (const Ladder& l : p.ladders) j["ladder"].push_back(ladder_json(l));
+  j["unreachable_keywords"] = p.unreachable_keywords;
   j["keyword_sets"] = Json::array();
   for (const KeywordSetRow& s : p.sets) {
     Json keywords = Json::array();

@@ -15,13 +15,18 @@ std::string set_words(const KeywordSetRow& s) {
 }
 
 void ladder_table(const PassReport& p, std::string& out) {
-  out += fmt::format("  {:<10} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", "", "full", "after skip",
-                     "after strip", "materials", "programs", "unique pp", "unique spv");
+  out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", "", "full", "after skip",
+                     "materials", "reachable", "after strip", "programs", "unique pp", "unique spv");
   for (const Ladder& l : p.ladders) {
-    out += fmt::format("  {:<10} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", l.scope, l.full.to_string(),
-                       l.after_skip.to_string(), l.after_strip,
-                       l.has_materials ? l.after_materials.to_string() : "-", l.programs, l.unique_tokens,
-                       l.unique_spirv);
+    out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", l.scope,
+                       l.full.to_string(), l.after_skip.to_string(),
+                       l.has_materials ? l.after_materials.to_string() : "-", l.reachable.to_string(), l.after_strip,
+                       l.programs, l.unique_tokens, l.unique_spirv);
+  }
+  if (!p.unreachable_keywords.empty()) {
+    out += fmt::format("  unreachable: {} (facet's renderer never enables them: counted in full and materials, "
+                       "not built unless --build-unreachable)\n",
+                       fmt::join(p.unreachable_keywords, " "));
   }
 }
 

@@ -74,6 +74,34 @@ TEST(ReportLadderTest, KeywordsShaderHasTheFullLadder) {
   EXPECT_EQ(p.variants.size(), 48u);
 }
 
+// PhongMultiLight.shader's ForwardBase: multi_compile_fwdbase's 83
+// combinations, of which the 4 without lightmap, shadowmask and vertex-light
+// keywords are reachable and built; the report names the others.
+TEST(ReportLadderTest, UnreachableShortcutKeywordsAreCountedAndNamed) {
+  ShaderReport r = report_of(example("PhongMultiLight.shader"));
+  ASSERT_GE(r.passes.size(), 1u);
+  const PassReport& base = r.passes[0];
+  EXPECT_EQ(ladder(base, "pass").full, BigCount(83));
+  EXPECT_EQ(ladder(base, "pass").reachable, BigCount(4));
+  EXPECT_EQ(ladder(base, "pass").after_strip, 4u);
+  std::vector<std::string> expected = {"LIGHTMAP_ON",        "DIRLIGHTMAP_COMBINED",   "DYNAMICLIGHTMAP_ON",
+                                       "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING", "VERTEXLIGHT_ON"};
+  std::vector<std::string> names = base.unreachable_keywords;
+  std::sort(names.begin(), names.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(names, expected);
+  std::string text = to_text({r});
+  EXPECT_NE(text.find("unreachable: "), std::string::npos) << text;
+  EXPECT_NE(text.find("not built unless --build-unreachable"), std::string::npos) << text;
+  auto json = nlohmann::json::parse(to_json({r}));
+  EXPECT_EQ(json["shaders"][0]["passes"][0]["ladder"][0]["reachable"], 4);
+  EXPECT_EQ(json["shaders"][0]["passes"][0]["unreachable_keywords"].size(), 6u);
+  // ForwardAdd's shortcut has no unreachable keywords.
+  ASSERT_GE(r.passes.size(), 2u);
+  EXPECT_TRUE(r.passes[1].unreachable_keywords.empty());
+  EXPECT_EQ(ladder(r.passes[1], "pass").reachable, ladder(r.passes[1], "pass").full);
+}
+
 TEST(ReportFindingsTest, FreeAndDeadKeywords) {
   ShaderReport keywords = report_of(example("Keywords.shader"));
   const PassReport& k = keywords.passes.at(0);
