@@ -1,8 +1,7 @@
 // `facet render` refuses an image output that is one of the files the
 // render reads (the scene, a texture, a mesh, a shader): exit 1, a clear
 // error, the input's bytes untouched. The check runs before any GPU work,
-// so these tests need no device. They run the `facet` binary built next to
-// facetc.
+// so these tests need no device. They run the `facet` binary the build made.
 #include "facetc_test_util.h"
 
 namespace facet::tools::testing {
@@ -10,7 +9,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-fs::path facet_binary() { return fs::path(FACETC_PATH).parent_path().parent_path() / "runtime" / "facet"; }
+fs::path facet_binary() { return FACET_PATH; }
 
 constexpr const char* kScene = R"({
   "width": 8, "height": 8,
@@ -27,7 +26,7 @@ class FacetRenderOutputTest : public FacetcTest {
  protected:
   void SetUp() override {
     FacetcTest::SetUp();
-    if (!fs::exists(facet_binary())) GTEST_SKIP() << "build the facet target: " << facet_binary();
+    ASSERT_TRUE(fs::exists(facet_binary())) << "the facet binary is missing: " << facet_binary();
     write_all(dir_ / "scene.json", kScene);
     write_all(dir_ / "tri.obj", kMesh);
     fs::copy_file(example("Diffuse.shader"), dir_ / "Diffuse.shader");
