@@ -75,10 +75,14 @@ bool defines_macro(std::string_view text, std::string_view name) {
   return false;
 }
 
-// Unity defines UNITY_PASS_<MODE> for the LightModes its include files test
-// (UnityStandardInput reads the lightmap uv in the Meta pass by it), unless
-// the program defines it itself, as surface shaders' generated code does.
-void append_pass_define(std::string& out, const ir::Program& program) {
+// Unity 2018.1 and later define UNITY_PASS_<MODE> for the LightModes their
+// include files test (UnityStandardInput reads the lightmap uv in the Meta
+// pass by it), unless the program defines it itself, as surface shaders'
+// generated code does. Unity 2017's include files define it themselves
+// (UnityStandardMeta), and its Illumin-VertexLit has code under
+// UNITY_PASS_META that only compiles because it is not defined.
+void append_pass_define(std::string& out, const ir::Program& program, const BackendOptions& options) {
+  if (options.unity_version < 201810) return;
   static constexpr std::pair<std::string_view, std::string_view> kPassDefines[] = {
       {"ForwardBase", "UNITY_PASS_FORWARDBASE"},   {"ForwardAdd", "UNITY_PASS_FORWARDADD"},
       {"Deferred", "UNITY_PASS_DEFERRED"},         {"ShadowCaster", "UNITY_PASS_SHADOWCASTER"},
@@ -108,7 +112,7 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
     out += "#define UNITY_COMPILER_HLSLCC\n";
     if (unity_cgincludes_on_path(options)) out += kUnityTier3Defines;
   }
-  append_pass_define(out, program);
+  append_pass_define(out, program, options);
   for (const std::string& keyword : keywords) {
     if (!keyword.empty()) out += fmt::format("#define {} 1\n", keyword);
   }

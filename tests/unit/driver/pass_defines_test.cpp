@@ -1,6 +1,6 @@
-// Unity's compiler defines UNITY_PASS_<MODE> from a pass's LightMode: a
-// pass sees its own define and no other, a SubShader-level LightMode counts,
-// and a program that defines the name itself is left alone.
+// Unity's compiler (2018.1 and later) defines UNITY_PASS_<MODE> from a
+// pass's LightMode: a pass sees its own define and no other, a SubShader-level
+// LightMode counts, and a program that defines the name itself is left alone.
 #include <gtest/gtest.h>
 
 #include "stdlib_compile.h"
@@ -65,6 +65,18 @@ TEST(PassDefinesTest, ASubShaderLightModeCopiedIntoThePassCounts) {
   std::string text = probe("", "defined(UNITY_PASS_META)");
   text.replace(text.find("SubShader {"), 11, R"(SubShader { Tags { "LightMode" = "Meta" })");
   expect_compiles(text);
+}
+
+TEST(PassDefinesTest, Unity2017DefinesNoPassNames) {
+  CompileOptions options;
+  options.backend.unity_version = 201740;
+  auto out = stdlib_test::compile_text(
+      "pass_defines.shader", probe(R"(Tags { "LightMode" = "Meta" })", "!defined(UNITY_PASS_META)"), options);
+  EXPECT_TRUE(out.ok) << out.log;
+  options.backend.unity_version = 201810;
+  out = stdlib_test::compile_text("pass_defines.shader",
+                                  probe(R"(Tags { "LightMode" = "Meta" })", "defined(UNITY_PASS_META)"), options);
+  EXPECT_TRUE(out.ok) << out.log;
 }
 
 }  // namespace
