@@ -69,24 +69,24 @@
 
 // Precision-suffixed sampler and texture types are the plain ones (all
 // sampling is float).
-#define sampler2D_half sampler2D
 #define sampler2D_float sampler2D
-#define samplerCUBE_half samplerCUBE
 #define samplerCUBE_float samplerCUBE
-#define sampler3D_half sampler3D
 #define sampler3D_float sampler3D
-#define Texture2D_half Texture2D
 #define Texture2D_float Texture2D
-#define Texture2DArray_half Texture2DArray
 #define Texture2DArray_float Texture2DArray
-#define Texture2DMS_half Texture2DMS
 #define Texture2DMS_float Texture2DMS
-#define TextureCube_half TextureCube
 #define TextureCube_float TextureCube
-#define TextureCubeArray_half TextureCubeArray
 #define TextureCubeArray_float TextureCubeArray
-#define Texture3D_half Texture3D
 #define Texture3D_float Texture3D
+#define sampler2D_half sampler2D
+#define samplerCUBE_half samplerCUBE
+#define sampler3D_half sampler3D
+#define Texture2D_half Texture2D
+#define Texture2DArray_half Texture2DArray
+#define Texture2DMS_half Texture2DMS
+#define TextureCube_half TextureCube
+#define TextureCubeArray_half TextureCubeArray
+#define Texture3D_half Texture3D
 #define UNITY_DECLARE_TEX2D_HALF(tex) sampler2D tex
 #define UNITY_DECLARE_TEX2D_FLOAT(tex) sampler2D tex
 #define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) sampler2D tex
@@ -167,22 +167,24 @@
 // Tessellation and keyword defaults (UNITY_COMPILER_HLSL comes from the
 // prelude, as Unity's compiler defines it).
 #define UNITY_CAN_COMPILE_TESSELLATION 1
-#define UNITY_domain domain
-#define UNITY_partitioning partitioning
-#define UNITY_outputtopology outputtopology
-#define UNITY_patchconstantfunc patchconstantfunc
-#define UNITY_outputcontrolpoints outputcontrolpoints
-#define UNITY_FASTOPT
-#define UNITY_ALLOWED_MRT_COUNT 8
-#if !defined(DIRLIGHTMAP_OFF) && !defined(DIRLIGHTMAP_COMBINED)
-#define DIRLIGHTMAP_OFF 1
-#endif
-#if !defined(LIGHTMAP_OFF) && !defined(LIGHTMAP_ON)
+// Where a shader turns no lightmap keyword on, the _OFF forms hold.
+#if !defined(LIGHTMAP_ON) && !defined(LIGHTMAP_OFF)
 #define LIGHTMAP_OFF 1
 #endif
-#if !defined(DYNAMICLIGHTMAP_OFF) && !defined(DYNAMICLIGHTMAP_ON)
+#if !defined(DYNAMICLIGHTMAP_ON) && !defined(DYNAMICLIGHTMAP_OFF)
 #define DYNAMICLIGHTMAP_OFF 1
 #endif
+#if !defined(DIRLIGHTMAP_COMBINED) && !defined(DIRLIGHTMAP_OFF)
+#define DIRLIGHTMAP_OFF 1
+#endif
+// Tessellation attribute names pass through unchanged.
+#define UNITY_outputcontrolpoints outputcontrolpoints
+#define UNITY_outputtopology outputtopology
+#define UNITY_partitioning partitioning
+#define UNITY_patchconstantfunc patchconstantfunc
+#define UNITY_domain domain
+#define UNITY_ALLOWED_MRT_COUNT 8
+#define UNITY_FASTOPT
 // Cg's WPOS is VPOS (the pixel position).
 #define WPOS VPOS
 #define GLOBAL_CBUFFER_START(name) cbuffer name {

@@ -30,49 +30,54 @@
     UNITY_INSTANCING_BUFFER_END(STWind)
 #endif
 
-struct Input
-{
-    half2   uv_MainTex  : TEXCOORD0;
-    fixed4  color       : COLOR;      // r = ao, g = hue variation amount, a = billboard fade
-#ifdef EFFECT_BACKSIDE_NORMALS
-    fixed   facing      : VFACE;
-#endif
-};
-
+// Material textures: colour, then the optional normal, extra (r smoothness,
+// g metallic, b ao) and subsurface maps.
 sampler2D _MainTex;
-fixed4 _Color;
-int _TwoSided;
-
 #ifdef EFFECT_BUMP
     sampler2D _BumpMap;
 #endif
-
 #ifdef EFFECT_EXTRA_TEX
-    sampler2D _ExtraTex;   // r = smoothness, g = metallic, b = ao
-#else
-    half _Glossiness;
-    half _Metallic;
+    sampler2D _ExtraTex;
+#endif
+#ifdef EFFECT_SUBSURFACE
+    sampler2D _SubsurfaceTex;
 #endif
 
+// Material values.
+fixed4 _Color;
+int _TwoSided;
+#ifndef EFFECT_EXTRA_TEX
+    half _Metallic;
+    half _Glossiness;
+#endif
 #ifdef EFFECT_HUE_VARIATION
     half4 _HueVariationColor;
 #endif
-
+#ifdef EFFECT_SUBSURFACE
+    fixed4 _SubsurfaceColor;
+    half _SubsurfaceIndirect;
+#endif
 #ifdef EFFECT_BILLBOARD
     half _BillboardShadowFade;
 #endif
 
-#ifdef EFFECT_SUBSURFACE
-    sampler2D _SubsurfaceTex;
-    fixed4 _SubsurfaceColor;
-    half _SubsurfaceIndirect;
+// The surface input: vertex colour (r ao, g hue-variation amount, a
+// billboard fade), the UV and, for back-side normals, the facing sign.
+struct Input
+{
+    float4 color : COLOR;
+    float2 uv_MainTex : TEXCOORD0;
+#ifdef EFFECT_BACKSIDE_NORMALS
+    float facing : VFACE;
 #endif
+};
 
-// Geometry type stored per vertex in texcoord3.w (+2 for the second leaf group).
-#define GEOM_TYPE_BRANCH 0
-#define GEOM_TYPE_FROND 1
-#define GEOM_TYPE_LEAF 2
+// Geometry type stored per vertex in texcoord3.w (+2 for the second leaf
+// group): branches and fronds are fixed, leaves may turn to the camera.
 #define GEOM_TYPE_FACINGLEAF 3
+#define GEOM_TYPE_LEAF 2
+#define GEOM_TYPE_FROND 1
+#define GEOM_TYPE_BRANCH 0
 
 // Turns a camera-facing leaf card about its anchor. Unity 6 meshes store the
 // card Z-up (DoLeafFacing); 2018/2019 meshes store it in view-plane axes,
@@ -170,12 +175,21 @@ void SpeedTreeVert(inout appdata_full v)
 // Standard lighting plus light through the leaf: the emission slot carries
 // the subsurface colour, which is lit by a GGX lobe around the direction
 // facing away from the light, plus indirect diffuse.
+#ifdef EFFECT_SUBSURFACE
+// What reaches the viewer through the leaf: indirect diffuse scaled by
+// _SubsurfaceIndirect plus the light in a GGX lobe around the backward view.
+half3 FacetSpeedTree8Transmitted(half smoothness, half3 viewDir, UnityGI gi)
+{
+    half cosBack = clamp(-dot(gi.light.dir, viewDir), 0, 1);
+    half lobe = GGXTerm(cosBack, 0.7 - smoothness * 0.5);
+    return gi.indirect.diffuse * _SubsurfaceIndirect + gi.light.color * lobe;
+}
+#endif
+
 half4 LightingSpeedTreeSubsurface(inout SurfaceOutputStandard s, half3 viewDir, UnityGI gi)
 {
 #ifdef EFFECT_SUBSURFACE
-    half roughness = 0.7 - s.Smoothness * 0.5;
-    half through = GGXTerm(clamp(-dot(gi.light.dir, viewDir), 0, 1), roughness);
-    s.Emission *= gi.indirect.diffuse * _SubsurfaceIndirect + gi.light.color * through;
+    s.Emission *= FacetSpeedTree8Transmitted(s.Smoothness, viewDir, gi);
 #endif
     return LightingStandard(s, viewDir, gi);
 }
@@ -195,52 +209,68 @@ half4 LightingSpeedTreeSubsurface_Deferred(SurfaceOutputStandard s, half3 viewDi
     return LightingStandard_Deferred(s, viewDir, gi, outGBuffer0, outGBuffer1, outGBuffer2);
 }
 
-void SpeedTreeSurf(Input i, inout SurfaceOutputStandard o)
+// facet's helpers for SpeedTreeSurf ---------------------------------------------
+
+// Hue variation: the albedo moved towards the hue colour by `amount`, then
+// rescaled so that its brightest channel lands half-way back to the
+// original's.
+half3 FacetSpeedTree8HueShift(half3 albedo, half amount)
 {
-    fixed4 color = tex2D(_MainTex, i.uv_MainTex) * _Color;
-
-    o.Alpha = color.a * i.color.a;
-    clip(o.Alpha - 0.3333);
-
-    o.Albedo = color.rgb;
 #ifdef EFFECT_HUE_VARIATION
-    {
-        // shift towards the hue colour, keeping the brightest channel half-way
-        half3 shifted = lerp(o.Albedo, _HueVariationColor.rgb, i.color.g);
-        half maxBase = max(o.Albedo.r, max(o.Albedo.g, o.Albedo.b));
-        half maxShifted = max(shifted.r, max(shifted.g, shifted.b));
-        shifted *= (maxBase / maxShifted) * 0.5f + 0.5f;
-        o.Albedo = saturate(shifted);
-    }
+    half3 tinted = lerp(albedo, _HueVariationColor.rgb, amount);
+    half peakBefore = max(albedo.r, max(albedo.g, albedo.b));
+    half peakAfter = max(tinted.r, max(tinted.g, tinted.b));
+    tinted *= (peakBefore / peakAfter) * 0.5f + 0.5f;
+    return saturate(tinted);
+#else
+    return albedo;
 #endif
+}
 
+// The tangent-space normal: the normal map or straight up, turned for the
+// back face of two-sided leaves (lit from behind), flattened for billboards
+// (their GI then matches the 3D tree's).
+#if defined(EFFECT_BUMP) || defined(EFFECT_BACKSIDE_NORMALS) || defined(EFFECT_BILLBOARD)
+float3 FacetSpeedTree8Normal(Input i)
+{
 #ifdef EFFECT_BUMP
-    o.Normal = UnpackNormal(tex2D(_BumpMap, i.uv_MainTex));
-#elif defined(EFFECT_BACKSIDE_NORMALS) || defined(EFFECT_BILLBOARD)
-    o.Normal = float3(0, 0, 1);
+    float3 n = UnpackNormal(tex2D(_BumpMap, i.uv_MainTex));
+#else
+    float3 n = float3(0, 0, 1);
 #endif
-
 #ifdef EFFECT_BACKSIDE_NORMALS
     if (i.facing < 0.5)
-        o.Normal.z = -o.Normal.z;   // two-sided leaves: light the back face from behind
+        n.z = -n.z;
 #endif
-
 #ifdef EFFECT_BILLBOARD
-    o.Normal.z *= 0.5;   // flatter billboard normals match the 3D tree's GI better
-    o.Normal = normalize(o.Normal);
+    n.z *= 0.5;
+    n = normalize(n);
+#endif
+    return n;
+}
 #endif
 
+void SpeedTreeSurf(Input i, inout SurfaceOutputStandard o)
+{
+    fixed4 texel = tex2D(_MainTex, i.uv_MainTex) * _Color;
+    o.Alpha = texel.a * i.color.a;
+    clip(o.Alpha - 0.3333);   // cut-out at a third
+    o.Albedo = FacetSpeedTree8HueShift(texel.rgb, i.color.g);
+#if defined(EFFECT_BUMP) || defined(EFFECT_BACKSIDE_NORMALS) || defined(EFFECT_BILLBOARD)
+    o.Normal = FacetSpeedTree8Normal(i);
+#endif
+
+    // Surface response from the extra map (r smoothness, g metallic, b ao)
+    // or the material sliders; the vertex colour's r is baked ao either way.
 #ifdef EFFECT_EXTRA_TEX
-    fixed4 extra = tex2D(_ExtraTex, i.uv_MainTex);
-    o.Smoothness = extra.r;
-    o.Metallic = extra.g;
-    o.Occlusion = extra.b * i.color.r;
+    fixed3 extra = tex2D(_ExtraTex, i.uv_MainTex).rgb;
+    half3 response = half3(extra.r, extra.g, extra.b * i.color.r);
 #else
-    o.Smoothness = _Glossiness;
-    o.Metallic = _Metallic;
-    o.Occlusion = i.color.r;
+    half3 response = half3(_Glossiness, _Metallic, i.color.r);
 #endif
-
+    o.Smoothness = response.x;
+    o.Metallic = response.y;
+    o.Occlusion = response.z;
 #ifdef EFFECT_SUBSURFACE
     o.Emission = tex2D(_SubsurfaceTex, i.uv_MainTex).rgb * _SubsurfaceColor.rgb;
 #endif

@@ -15,84 +15,89 @@
 
 #include "SpeedTreeVertex.cginc"
 
-struct Input
-{
-    fixed4 color;
-    half3 interpolator1;   // xy = main uv, z = hue variation amount
-#ifdef GEOM_TYPE_BRANCH_DETAIL
-    half3 interpolator2;   // xy = detail uv, z = blend (0..1) or 2.5 for "use the detail's alpha"
-#endif
-};
-
-#define mainTexUV interpolator1.xy
+// --- Material values ---------------------------------------------------------
+fixed4 _Color;
 sampler2D _MainTex;
-
 #ifdef GEOM_TYPE_BRANCH_DETAIL
-    #define Detail interpolator2
     sampler2D _DetailTex;
 #endif
-
+#if defined(EFFECT_BUMP) && !defined(LIGHTMAP_ON)
+    sampler2D _BumpMap;
+#endif
+#ifdef EFFECT_HUE_VARIATION
+    half4 _HueVariation;   // rgb = target hue, a = strength
+#endif
 // Fronds and leaves are alpha tested. (SpeedTreeBillboardCommon.cginc
 // defines SPEEDTREE_ALPHATEST and _Cutoff itself before including this.)
-#if (defined(GEOM_TYPE_FROND) || defined(GEOM_TYPE_LEAF) || defined(GEOM_TYPE_FACING_LEAF)) && !defined(SPEEDTREE_ALPHATEST)
+#if !defined(SPEEDTREE_ALPHATEST) && (defined(GEOM_TYPE_FROND) || defined(GEOM_TYPE_LEAF) || defined(GEOM_TYPE_FACING_LEAF))
     #define SPEEDTREE_ALPHATEST
     fixed _Cutoff;
 #endif
 
+// --- The surface input ---------------------------------------------------------
+// Vertex colour (ambient occlusion times _Color), the main uv with the hue
+// variation amount, and for detailed branches the detail uv with the blend
+// (0..1, or 2.5 for "use the detail's alpha"); the macros name the parts.
+struct Input
+{
+    float3 interpolator1;
+#ifdef GEOM_TYPE_BRANCH_DETAIL
+    float3 interpolator2;
+#endif
+    float4 color;
+};
+#define mainTexUV interpolator1.xy
 #ifdef EFFECT_HUE_VARIATION
     #define HueVariationAmount interpolator1.z
-    half4 _HueVariation;   // rgb = target hue, a = strength
+#endif
+#ifdef GEOM_TYPE_BRANCH_DETAIL
+    #define Detail interpolator2
 #endif
 
-#if defined(EFFECT_BUMP) && !defined(LIGHTMAP_ON)
-    sampler2D _BumpMap;
+#ifdef EFFECT_HUE_VARIATION
+// How far this vertex moves towards the hue colour: mostly per tree (from
+// its position), plus a little per vertex.
+float FacetSpeedTreeHueAmount(float3 vertex, float3 normal)
+{
+    float3 treePos = float3(unity_ObjectToWorld[0].w, unity_ObjectToWorld[1].w, unity_ObjectToWorld[2].w);
+    float perTree = frac(treePos.x + treePos.y + treePos.z);
+    float amount = perTree + (frac(vertex.x + normal.y + normal.x) * 0.5 - 0.3);
+    return saturate(amount * _HueVariation.a);
+}
 #endif
-
-fixed4 _Color;
 
 void SpeedTreeVert(inout SpeedTreeVB v, out Input o)
 {
     UNITY_INITIALIZE_OUTPUT(Input, o);
-
+    o.color = float4(_Color.rgb * v.color.r, _Color.a);   // r: ambient occlusion
     o.mainTexUV = v.texcoord.xy;
-    o.color = _Color;
-    o.color.rgb *= v.color.r;   // ambient occlusion
-
 #ifdef EFFECT_HUE_VARIATION
-    // per tree (its position) plus a little per vertex
-    float3 treePos = float3(unity_ObjectToWorld[0].w, unity_ObjectToWorld[1].w, unity_ObjectToWorld[2].w);
-    float amount = frac(treePos.x + treePos.y + treePos.z);
-    amount += frac(v.vertex.x + v.normal.y + v.normal.x) * 0.5 - 0.3;
-    o.HueVariationAmount = saturate(amount * _HueVariation.a);
+    o.HueVariationAmount = FacetSpeedTreeHueAmount(v.vertex.xyz, v.normal);
 #endif
-
 #ifdef GEOM_TYPE_BRANCH_DETAIL
     // Seam blending (alpha 0) and detail texturing use separate parts of the
     // mesh, so the two meanings of .z never interpolate into each other.
-    o.Detail.xy = v.texcoord2.xy;
-    o.Detail.z = v.color.a == 0 ? v.texcoord2.z : 2.5f;
+    float blend = v.color.a == 0 ? v.texcoord2.z : 2.5f;
+    o.Detail = float3(v.texcoord2.xy, blend);
 #endif
-
     OffsetSpeedTreeVertex(v, unity_LODFade.x);
 }
 
-#if defined(EFFECT_BUMP)
-    #define SPEEDTREE_DATA_NORMAL           fixed3 Normal;
-    #define SPEEDTREE_COPY_NORMAL(to, from) to.Normal = from.Normal;
-#else
+// --- The fragment part ---------------------------------------------------------
+// SpeedTreeFrag's result, copied into the surface output by
+// SPEEDTREE_COPY_FRAG; the normal only with EFFECT_BUMP.
+#ifndef EFFECT_BUMP
     #define SPEEDTREE_DATA_NORMAL
     #define SPEEDTREE_COPY_NORMAL(to, from)
+#else
+    #define SPEEDTREE_DATA_NORMAL fixed3 Normal;
+    #define SPEEDTREE_COPY_NORMAL(to, from) to.Normal = from.Normal;
 #endif
-
-#define SPEEDTREE_COPY_FRAG(to, from)   \
-    to.Albedo = from.Albedo;            \
-    to.Alpha = from.Alpha;              \
-    SPEEDTREE_COPY_NORMAL(to, from)
-
+#define SPEEDTREE_COPY_FRAG(to, from) to.Alpha = from.Alpha; to.Albedo = from.Albedo; SPEEDTREE_COPY_NORMAL(to, from)
 struct SpeedTreeFragOut
 {
-    fixed3 Albedo;
     fixed Alpha;
+    fixed3 Albedo;
     SPEEDTREE_DATA_NORMAL
 };
 
@@ -107,36 +112,41 @@ inline half3 FacetSpeedTreeHueShift(half3 color, half3 hue, half amount)
     return saturate(shifted);
 }
 
+#ifdef GEOM_TYPE_BRANCH_DETAIL
+// The detail layer's share at this pixel: the interpolated blend, or (2.5
+// marks it) the detail texture's own alpha.
+half FacetSpeedTreeDetailBlend(float blendOrMarker, half detailAlpha)
+{
+    return blendOrMarker < 2.0f ? saturate(blendOrMarker) : detailAlpha;
+}
+#endif
+
 void SpeedTreeFrag(Input i, out SpeedTreeFragOut o)
 {
-    half4 diffuse = tex2D(_MainTex, i.mainTexUV);
-
-    o.Alpha = diffuse.a * _Color.a;
+    half4 texel = tex2D(_MainTex, i.mainTexUV);
+    o.Alpha = texel.a * _Color.a;
 #ifdef SPEEDTREE_ALPHATEST
     clip(o.Alpha - _Cutoff);
 #endif
 
+    half3 albedo = texel.rgb;
 #ifdef GEOM_TYPE_BRANCH_DETAIL
-    half4 detail = tex2D(_DetailTex, i.Detail.xy);
-    half detailBlend = i.Detail.z < 2.0f ? saturate(i.Detail.z) : detail.a;
-    diffuse.rgb = lerp(diffuse.rgb, detail.rgb, detailBlend);
+    half4 detailTexel = tex2D(_DetailTex, i.Detail.xy);
+    half detailShare = FacetSpeedTreeDetailBlend(i.Detail.z, detailTexel.a);
+    albedo = lerp(albedo, detailTexel.rgb, detailShare);
 #endif
-
 #ifdef EFFECT_HUE_VARIATION
-    diffuse.rgb = FacetSpeedTreeHueShift(diffuse.rgb, _HueVariation.rgb, i.HueVariationAmount);
+    albedo = FacetSpeedTreeHueShift(albedo, _HueVariation.rgb, i.HueVariationAmount);
 #endif
+    o.Albedo = albedo * i.color.rgb;
 
-    o.Albedo = diffuse.rgb * i.color.rgb;
-
-#if defined(EFFECT_BUMP)
-    #if defined(LIGHTMAP_ON)
-        o.Normal = fixed3(0, 0, 1);
-    #else
-        o.Normal = UnpackNormal(tex2D(_BumpMap, i.mainTexUV));
-        #ifdef GEOM_TYPE_BRANCH_DETAIL
-            o.Normal = lerp(o.Normal, UnpackNormal(tex2D(_BumpMap, i.Detail.xy)), detailBlend);
-        #endif
-    #endif
+    // Lightmapped trees keep the flat normal the lightmap was baked with.
+#if defined(EFFECT_BUMP) && defined(LIGHTMAP_ON)
+    o.Normal = fixed3(0, 0, 1);
+#elif defined(EFFECT_BUMP) && defined(GEOM_TYPE_BRANCH_DETAIL)
+    o.Normal = lerp(UnpackNormal(tex2D(_BumpMap, i.mainTexUV)), UnpackNormal(tex2D(_BumpMap, i.Detail.xy)), detailShare);
+#elif defined(EFFECT_BUMP)
+    o.Normal = UnpackNormal(tex2D(_BumpMap, i.mainTexUV));
 #endif
 }
 

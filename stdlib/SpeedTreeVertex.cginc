@@ -10,30 +10,32 @@
 // 1          lod position xyz                lod position xyz          anchor xyz, w lod scalar
 // 2          detail/seam uv, seam amount     frond wind xyz            leaf wind xyz, w leaf group
 // 3 (xy)     -                               -                         lod position yz (with 1.w as x)
+// (The semantics give the locations; half is float in facet.)
 struct SpeedTreeVB
 {
-    float4 vertex       : POSITION;
-    float4 tangent      : TANGENT;
-    float3 normal       : NORMAL;
-    float4 texcoord     : TEXCOORD0;
-    float4 texcoord1    : TEXCOORD1;
-    float4 texcoord2    : TEXCOORD2;
-    float2 texcoord3    : TEXCOORD3;
-    half4 color         : COLOR;      // r = ambient occlusion, a = 0 for camera-facing leaves
+    float4 vertex : POSITION;
+    float4 color : COLOR;      // r = ambient occlusion, a = 0 for camera-facing leaves
+    float3 normal : NORMAL;
+    float4 tangent : TANGENT;
+    float4 texcoord : TEXCOORD0;
+    float4 texcoord1 : TEXCOORD1;
+    float4 texcoord2 : TEXCOORD2;
+    float2 texcoord3 : TEXCOORD3;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
 
 #ifdef ENABLE_WIND
 
-#define WIND_QUALITY_NONE       0
-#define WIND_QUALITY_FASTEST    1
-#define WIND_QUALITY_FAST       2
-#define WIND_QUALITY_BETTER     3
-#define WIND_QUALITY_BEST       4
+// _WindQuality's values (the material's choice), from none to the palm model.
 #define WIND_QUALITY_PALM       5
+#define WIND_QUALITY_BEST       4
+#define WIND_QUALITY_BETTER     3
+#define WIND_QUALITY_FAST       2
+#define WIND_QUALITY_FASTEST    1
+#define WIND_QUALITY_NONE       0
 
-uniform half _WindQuality;   // material: one of WIND_QUALITY_*
 uniform half _WindEnabled;   // set by Unity 5.x-2019 engines; facet decides from the wind vector (below)
+uniform half _WindQuality;   // material: one of WIND_QUALITY_*
 
 #ifndef SPEEDTREE_8_WIND
 #define SPEEDTREE_8_WIND 1   // SpeedTree 7 uses the 7/8 wind model

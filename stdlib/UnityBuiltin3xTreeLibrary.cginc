@@ -8,21 +8,24 @@
 #include "Lighting.cginc"
 #include "TerrainEngine.cginc"
 
-// Material values (loose globals: "$Globals", filled by name).
-fixed4 _Color;
-fixed3 _TranslucencyColor;
-fixed _TranslucencyViewDependency;  // 0: back light follows -N.L, 1: follows -V.L
-half _ShadowStrength;               // how much a directional light's shadow darkens leaves
-
-struct LeafSurfaceOutput {
+// The leaf lighting model's surface: the usual SurfaceOutput members plus
+// how much light passes through the leaf.
+struct LeafSurfaceOutput
+{
     fixed3 Albedo;
+    fixed Alpha;
     fixed3 Normal;
     fixed3 Emission;
-    fixed Translucency;
     half Specular;
     fixed Gloss;
-    fixed Alpha;
+    fixed Translucency;
 };
+
+// Material values (loose globals: "$Globals", filled by name).
+fixed4 _Color;
+half _ShadowStrength;               // how much a directional light's shadow darkens leaves
+fixed3 _TranslucencyColor;
+fixed _TranslucencyViewDependency;  // 0: back light follows -N.L, 1: follows -V.L
 
 // How much light comes through the leaf from behind: the back side's N.L,
 // blended towards "looking into the light" (-V.L) by the view dependency.

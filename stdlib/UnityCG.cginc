@@ -7,72 +7,76 @@
 #include "UnityShaderUtilities.cginc"
 #include "FacetCore.hlsl"
 
-#define UNITY_PI 3.14159265359f
-#define UNITY_TWO_PI 6.28318530718f
-#define UNITY_FOUR_PI 12.56637061436f
-#define UNITY_INV_PI 0.31830988618f
-#define UNITY_INV_TWO_PI 0.15915494309f
-#define UNITY_INV_FOUR_PI 0.07957747155f
+// Multiples of pi and their inverses, from the half turn up.
 #define UNITY_HALF_PI 1.57079632679f
 #define UNITY_INV_HALF_PI 0.636619772367f
+#define UNITY_PI 3.14159265359f
+#define UNITY_INV_PI 0.31830988618f
+#define UNITY_TWO_PI 6.28318530718f
+#define UNITY_INV_TWO_PI 0.15915494309f
+#define UNITY_FOUR_PI 12.56637061436f
+#define UNITY_INV_FOUR_PI 0.07957747155f
+// The smallest normal 16-bit float (2^-14).
 #define UNITY_HALF_MIN 6.103515625e-5
 
 // Colour-space constants. Linear: the gamma values converted with the sRGB
 // curve; the dielectric F0 is 0.04 (4% reflectance) in both spaces.
-#ifdef UNITY_COLORSPACE_GAMMA
-#define unity_ColorSpaceGrey fixed4(0.5, 0.5, 0.5, 0.5)
-#define unity_ColorSpaceDouble fixed4(2.0, 2.0, 2.0, 2.0)
-#define unity_ColorSpaceDielectricSpec half4(0.220916301, 0.220916301, 0.220916301, 1.0 - 0.220916301)
-#define unity_ColorSpaceLuminance half4(0.22, 0.707, 0.071, 0.0)
-#else
-#define unity_ColorSpaceGrey fixed4(0.214041144, 0.214041144, 0.214041144, 0.5)
-#define unity_ColorSpaceDouble fixed4(4.59479380, 4.59479380, 4.59479380, 2.0)
+#ifndef UNITY_COLORSPACE_GAMMA
 #define unity_ColorSpaceDielectricSpec half4(0.04, 0.04, 0.04, 1.0 - 0.04)
 #define unity_ColorSpaceLuminance half4(0.2126729, 0.7151522, 0.0721750, 1.0)
-#endif
-
-inline bool IsGammaSpace()
-{
-#ifdef UNITY_COLORSPACE_GAMMA
-    return true;
+#define unity_ColorSpaceGrey fixed4(0.214041144, 0.214041144, 0.214041144, 0.5)
+#define unity_ColorSpaceDouble fixed4(4.59479380, 4.59479380, 4.59479380, 2.0)
+inline bool IsGammaSpace() { return false; }
 #else
-    return false;
+#define unity_ColorSpaceDielectricSpec half4(0.220916301, 0.220916301, 0.220916301, 1.0 - 0.220916301)
+#define unity_ColorSpaceLuminance half4(0.22, 0.707, 0.071, 0.0)
+#define unity_ColorSpaceGrey fixed4(0.5, 0.5, 0.5, 0.5)
+#define unity_ColorSpaceDouble fixed4(2.0, 2.0, 2.0, 2.0)
+inline bool IsGammaSpace() { return true; }
 #endif
-}
 
 // ---- vertex inputs ------------------------------------------------------------
-struct appdata_base {
+// Position, normal and first UV; the tangent form adds the tangent (w: the
+// binormal sign); the full form all four UV sets and the vertex colour.
+// The semantics, not the member order, give the locations.
+struct appdata_base
+{
     float4 vertex : POSITION;
-    float3 normal : NORMAL;
     float4 texcoord : TEXCOORD0;
+    float3 normal : NORMAL;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
-struct appdata_tan {
+struct appdata_tan
+{
     float4 vertex : POSITION;
-    float4 tangent : TANGENT;
-    float3 normal : NORMAL;
     float4 texcoord : TEXCOORD0;
+    float3 normal : NORMAL;
+    float4 tangent : TANGENT;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
-struct appdata_full {
+struct appdata_full
+{
     float4 vertex : POSITION;
-    float4 tangent : TANGENT;
+    float4 color : COLOR;
     float3 normal : NORMAL;
+    float4 tangent : TANGENT;
     float4 texcoord : TEXCOORD0;
     float4 texcoord1 : TEXCOORD1;
     float4 texcoord2 : TEXCOORD2;
     float4 texcoord3 : TEXCOORD3;
-    fixed4 color : COLOR;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
-struct appdata_img {
+// The image-effect pair used by vert_img.
+struct appdata_img
+{
     float4 vertex : POSITION;
-    half2 texcoord : TEXCOORD0;
+    float2 texcoord : TEXCOORD0;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
-struct v2f_img {
+struct v2f_img
+{
     float4 pos : SV_POSITION;
-    half2 uv : TEXCOORD0;
+    float2 uv : TEXCOORD0;
     UNITY_VERTEX_INPUT_INSTANCE_ID
     UNITY_VERTEX_OUTPUT_STEREO
 };
@@ -207,32 +211,25 @@ inline half LinearRgbToLuminance(half3 linearRgb) { return FacetLuminance(linear
 
 // ---- textures --------------------------------------------------------------------------------
 inline fixed3 UnpackNormal(fixed4 packednormal) { return FacetUnpackNormal(packednormal); }
-// x from alpha, y from green (DXT5nm), or x from red (BC5, alpha 1).
+// facet's helper: a unit-length normal from its x and y, z the positive root.
+float3 FacetNormalFromXY(float2 xy) { return float3(xy, sqrt(1.0 - saturate(dot(xy, xy)))); }
+// x from alpha, y from green (DXT5nm), or x from red (BC5, alpha 1): the
+// product red * alpha serves both.
 fixed3 UnpackNormalmapRGorAG(fixed4 packednormal)
 {
-    packednormal.x *= packednormal.w;
-    fixed3 n;
-    n.xy = packednormal.xy * 2.0 - 1.0;
-    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
-    return n;
+    float2 encoded = float2(packednormal.x * packednormal.w, packednormal.y);
+    return FacetNormalFromXY(encoded * 2.0 - 1.0);
 }
-inline fixed3 UnpackNormalDXT5nm(fixed4 packednormal)
-{
-    fixed3 n;
-    n.xy = packednormal.wy * 2.0 - 1.0;
-    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
-    return n;
-}
+inline fixed3 UnpackNormalDXT5nm(fixed4 packednormal) { return FacetNormalFromXY(packednormal.wy * 2.0 - 1.0); }
 // Unity's form rebuilds z from the scaled xy in both encodings.
 fixed3 UnpackNormalWithScale(fixed4 packednormal, float scale)
 {
 #ifndef UNITY_NO_DXT5nm
-    packednormal.x *= packednormal.w;
+    float2 encoded = float2(packednormal.x * packednormal.w, packednormal.y);
+#else
+    float2 encoded = packednormal.xy;
 #endif
-    fixed3 n;
-    n.xy = (packednormal.xy * 2.0 - 1.0) * scale;
-    n.z = sqrt(1.0 - saturate(dot(n.xy, n.xy)));
-    return n;
+    return FacetNormalFromXY((encoded * 2.0 - 1.0) * scale);
 }
 inline half3 DecodeHDR(half4 data, half4 decodeInstructions) { return FacetDecodeHDR(data, decodeInstructions); }
 // Unity 6's form with the colour space as an argument: gamma skips the exponent.
@@ -269,16 +266,14 @@ inline half3 DecodeLightmapRGBM(half4 data, half4 decodeInstructions)
 #endif
 }
 inline half3 DecodeLightmapDoubleLDR(fixed4 color, half4 decodeInstructions) { return decodeInstructions.x * color.rgb; }
-inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions)
-{
+// The encoding the project's lightmaps use; full HDR (facet's) by default.
 #if defined(UNITY_LIGHTMAP_DLDR_ENCODING)
-    return DecodeLightmapDoubleLDR(color, decodeInstructions);
+inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions) { return DecodeLightmapDoubleLDR(color, decodeInstructions); }
 #elif defined(UNITY_LIGHTMAP_RGBM_ENCODING)
-    return DecodeLightmapRGBM(color, decodeInstructions);
+inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions) { return DecodeLightmapRGBM(color, decodeInstructions); }
 #else
-    return color.rgb;
+inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions) { return color.rgb; }
 #endif
-}
 inline half3 DecodeLightmap(fixed4 color) { return DecodeLightmap(color, unity_Lightmap_HDR); }
 // Realtime (Enlighten) lightmaps: RGBM in linear space with its own exponent.
 inline half3 DecodeRealtimeLightmap(fixed4 color)
@@ -297,33 +292,21 @@ inline half3 DecodeDirectionalLightmap(half3 color, fixed4 dirTex, half3 normalW
 // The L0+L1 and L2 parts of the environment SH, linear, unclamped.
 half3 SHEvalLinearL0L1(half4 normal) { return FacetSHEvalL0L1(normal, unity_SHAr, unity_SHAg, unity_SHAb); }
 half3 SHEvalLinearL2(half4 normal) { return FacetSHEvalL2(normal, unity_SHBr, unity_SHBg, unity_SHBb, unity_SHC); }
+// facet's helper: SH results come out linear; gamma projects want them
+// converted.
+half3 FacetShInColorSpace(half3 linearValue)
+{
+#ifdef UNITY_COLORSPACE_GAMMA
+    return LinearToGammaSpace(linearValue);
+#else
+    return linearValue;
+#endif
+}
 // Environment irradiance for a world normal (normal.w = 1), in the project's colour space.
-half3 ShadeSH9(half4 normal)
-{
-    half3 res = FacetShadeSH9(normal);
-#ifdef UNITY_COLORSPACE_GAMMA
-    res = LinearToGammaSpace(res);
-#endif
-    return res;
-}
-
+half3 ShadeSH9(half4 normal) { return FacetShInColorSpace(FacetShadeSH9(normal)); }
 // Old partial forms: only L2 (ShadeSH3Order) or only L0+L1 (ShadeSH12Order).
-half3 ShadeSH3Order(half4 normal)
-{
-    half3 res = SHEvalLinearL2(normal);
-#ifdef UNITY_COLORSPACE_GAMMA
-    res = LinearToGammaSpace(res);
-#endif
-    return res;
-}
-half3 ShadeSH12Order(half4 normal)
-{
-    half3 res = SHEvalLinearL0L1(normal);
-#ifdef UNITY_COLORSPACE_GAMMA
-    res = LinearToGammaSpace(res);
-#endif
-    return res;
-}
+half3 ShadeSH3Order(half4 normal) { return FacetShInColorSpace(SHEvalLinearL2(normal)); }
+half3 ShadeSH12Order(half4 normal) { return FacetShInColorSpace(SHEvalLinearL0L1(normal)); }
 
 // ---- fog (keywords FOG_LINEAR, FOG_EXP, FOG_EXP2 from multi_compile_fog) -----------------------
 #if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
@@ -376,17 +359,22 @@ half3 ShadeSH12Order(half4 normal)
 // Rows of the tangent-to-world matrix as _unity_tbn_0..2; UNITY_RECONSTRUCT_TBN
 // rebuilds them from tangent and normal (the binormal sign in tSpace1.y)
 // when the generated pass packs other data in the spare components.
+// facet's helper: component `axis` of three vectors, as one vector (a row
+// of the matrix whose columns they are).
+float3 FacetFrameRow(float3 c0, float3 c1, float3 c2, int axis) { return float3(c0[axis], c1[axis], c2[axis]); }
 #define UNITY_EXTRACT_TBN_0(name) fixed3 _unity_tbn_0 = name.tSpace0.xyz
+#define UNITY_RECONSTRUCT_TBN_0 fixed3 _unity_tbn_0 = FacetFrameRow(_unity_tangent, _unity_binormal, _unity_normal, 0)
 #define UNITY_EXTRACT_TBN_1(name) fixed3 _unity_tbn_1 = name.tSpace1.xyz
+#define UNITY_RECONSTRUCT_TBN_1 fixed3 _unity_tbn_1 = FacetFrameRow(_unity_tangent, _unity_binormal, _unity_normal, 1)
 #define UNITY_EXTRACT_TBN_2(name) fixed3 _unity_tbn_2 = name.tSpace2.xyz
+#define UNITY_RECONSTRUCT_TBN_2 fixed3 _unity_tbn_2 = FacetFrameRow(_unity_tangent, _unity_binormal, _unity_normal, 2)
 #define UNITY_EXTRACT_TBN(name) UNITY_EXTRACT_TBN_0(name); UNITY_EXTRACT_TBN_1(name); UNITY_EXTRACT_TBN_2(name)
-#define UNITY_EXTRACT_TBN_T(name) fixed3 _unity_tangent = fixed3(name.tSpace0.x, name.tSpace1.x, name.tSpace2.x)
-#define UNITY_EXTRACT_TBN_N(name) fixed3 _unity_normal = fixed3(name.tSpace0.z, name.tSpace1.z, name.tSpace2.z)
+// Tangent and normal are the x and z columns; the binormal is rebuilt and
+// its sign taken from tSpace1.y.
+#define UNITY_EXTRACT_TBN_T(name) fixed3 _unity_tangent = FacetFrameRow(name.tSpace0.xyz, name.tSpace1.xyz, name.tSpace2.xyz, 0)
+#define UNITY_EXTRACT_TBN_N(name) fixed3 _unity_normal = FacetFrameRow(name.tSpace0.xyz, name.tSpace1.xyz, name.tSpace2.xyz, 2)
 #define UNITY_EXTRACT_TBN_B(name) fixed3 _unity_binormal = cross(_unity_normal, _unity_tangent)
 #define UNITY_CORRECT_TBN_B_SIGN(name) _unity_binormal *= name.tSpace1.y;
-#define UNITY_RECONSTRUCT_TBN_0 fixed3 _unity_tbn_0 = fixed3(_unity_tangent.x, _unity_binormal.x, _unity_normal.x)
-#define UNITY_RECONSTRUCT_TBN_1 fixed3 _unity_tbn_1 = fixed3(_unity_tangent.y, _unity_binormal.y, _unity_normal.y)
-#define UNITY_RECONSTRUCT_TBN_2 fixed3 _unity_tbn_2 = fixed3(_unity_tangent.z, _unity_binormal.z, _unity_normal.z)
 #if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
 #define UNITY_RECONSTRUCT_TBN(name) UNITY_EXTRACT_TBN_T(name); UNITY_EXTRACT_TBN_N(name); UNITY_EXTRACT_TBN_B(name); \
     UNITY_CORRECT_TBN_B_SIGN(name); UNITY_RECONSTRUCT_TBN_0; UNITY_RECONSTRUCT_TBN_1; UNITY_RECONSTRUCT_TBN_2
@@ -441,12 +429,10 @@ inline float2 ParallaxOffset(half h, half height, half3 viewDir)
 // A 0..1 float in four 8-bit channels and back.
 inline float4 EncodeFloatRGBA(float v)
 {
-    float4 kEncodeMul = float4(1.0, 255.0, 65025.0, 16581375.0);
-    float kEncodeBit = 1.0 / 255.0;
-    float4 enc = kEncodeMul * v;
-    enc = frac(enc);
-    enc -= enc.yzww * kEncodeBit;
-    return enc;
+    // Each channel keeps the fraction of v scaled by a further 255, less
+    // what the next channel carries.
+    float4 digits = frac(float4(1.0, 255.0, 65025.0, 16581375.0) * v);
+    return digits - digits.yzww * (1.0 / 255.0);
 }
 inline float DecodeFloatRGBA(float4 enc) { return dot(enc, float4(1.0, 1 / 255.0, 1 / 65025.0, 1 / 16581375.0)); }
 inline float2 EncodeFloatRG(float v)

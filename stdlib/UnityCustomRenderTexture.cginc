@@ -9,38 +9,56 @@
 
 #include "UnityCG.cginc"
 
-#define kCustomTextureBatchSize 16
+// --- What the runtime fills ----------------------------------------------------
+// The texture being updated: size and face/slice, and the texture itself
+// (its previous content, for double-buffered updates).
+float4 _CustomRenderTextureInfo;   // width, height, depth, cube face or 3D slice
+#define _CustomRenderTextureCubeFace _CustomRenderTextureInfo.w
+#define _CustomRenderTexture3DSlice _CustomRenderTextureInfo.w
+#define _CustomRenderTextureWidth _CustomRenderTextureInfo.x
+#define _CustomRenderTextureHeight _CustomRenderTextureInfo.y
+#define _CustomRenderTextureDepth _CustomRenderTextureInfo.z
+samplerCUBE _SelfTextureCube;
+sampler2D _SelfTexture2D;
+sampler3D _SelfTexture3D;
 
+// Up to kCustomTextureBatchSize update zones per draw.
+#define kCustomTextureBatchSize 16
+float4 CustomRenderTextureParameters;
+#define CustomRenderTextureIs3D CustomRenderTextureParameters.z
+#define CustomRenderTexture3DTexcoordW CustomRenderTextureParameters.y
+#define CustomRenderTextureUpdateSpace CustomRenderTextureParameters.x  // 0 normalised, 1 pixels
+float4 CustomRenderTextureCenters[kCustomTextureBatchSize];
+float4 CustomRenderTextureSizesAndRotations[kCustomTextureBatchSize];  // xyz = size, w = rotation (degrees)
+float CustomRenderTexturePrimitiveIDs[kCustomTextureBatchSize];
+
+// --- Stage interfaces -----------------------------------------------------------
+// The update program's: the vertex index in; the zone's uv, the texture's uv,
+// the zone index and (cube textures) the texel's direction out.
 struct appdata_customrendertexture
 {
     uint vertexID : SV_VertexID;
 };
-
 struct v2f_customrendertexture
 {
     float4 vertex : SV_POSITION;
+    float3 direction : TEXCOORD3;
     float3 localTexcoord : TEXCOORD0;   // 0..1 across the update zone
     float3 globalTexcoord : TEXCOORD1;  // 0..1 across the whole texture
     uint primitiveID : TEXCOORD2;       // the update zone's index
-    float3 direction : TEXCOORD3;       // cube textures: the texel's direction
 };
-
-float4 CustomRenderTextureCenters[kCustomTextureBatchSize];
-float4 CustomRenderTextureSizesAndRotations[kCustomTextureBatchSize];  // xyz = size, w = rotation (degrees)
-float CustomRenderTexturePrimitiveIDs[kCustomTextureBatchSize];
-float4 CustomRenderTextureParameters;
-#define CustomRenderTextureUpdateSpace CustomRenderTextureParameters.x  // 0 normalised, 1 pixels
-#define CustomRenderTexture3DTexcoordW CustomRenderTextureParameters.y
-#define CustomRenderTextureIs3D CustomRenderTextureParameters.z
-float4 _CustomRenderTextureInfo;   // width, height, depth, cube face or 3D slice
-#define _CustomRenderTextureWidth _CustomRenderTextureInfo.x
-#define _CustomRenderTextureHeight _CustomRenderTextureInfo.y
-#define _CustomRenderTextureDepth _CustomRenderTextureInfo.z
-#define _CustomRenderTextureCubeFace _CustomRenderTextureInfo.w
-#define _CustomRenderTexture3DSlice _CustomRenderTextureInfo.w
-sampler2D _SelfTexture2D;
-samplerCUBE _SelfTextureCube;
-sampler3D _SelfTexture3D;
+// The initialisation program's: a quad with uv in, uv and direction out.
+struct appdata_init_customrendertexture
+{
+    float2 texcoord : TEXCOORD0;
+    float4 vertex : POSITION;
+};
+struct v2f_init_customrendertexture
+{
+    float4 vertex : SV_POSITION;
+    float3 direction : TEXCOORD1;
+    float3 texcoord : TEXCOORD0;
+};
 
 float2 CustomRenderTextureRotate2D(float2 pos, float angle)
 {
@@ -90,34 +108,24 @@ v2f_customrendertexture CustomRenderTextureVertexShader(appdata_customrendertext
         if (_CustomRenderTexture3DSlice < minSlice || _CustomRenderTexture3DSlice >= maxSlice) pos = float2(1000.0, 1000.0);
     }
 
+    // Clip xy to texture uv: x from -1..1 to 0..1, y flipped.
+    float2 textureUV = float2(pos.x * 0.5 + 0.5, 0.5 - pos.y * 0.5);
     v2f_customrendertexture o;
     o.vertex = float4(pos, 0.0, 1.0);
-    o.primitiveID = asuint(CustomRenderTexturePrimitiveIDs[zone]);
+    o.direction = CustomRenderTextureComputeCubeDirection(textureUV);
     o.localTexcoord = float3(quadUV, CustomRenderTexture3DTexcoordW);
-    o.globalTexcoord = float3(pos.x * 0.5 + 0.5, 0.5 - pos.y * 0.5, CustomRenderTexture3DTexcoordW);
-    o.direction = CustomRenderTextureComputeCubeDirection(o.globalTexcoord.xy);
+    o.globalTexcoord = float3(textureUV, CustomRenderTexture3DTexcoordW);
+    o.primitiveID = asuint(CustomRenderTexturePrimitiveIDs[zone]);
     return o;
 }
 
-struct appdata_init_customrendertexture
-{
-    float4 vertex : POSITION;
-    float2 texcoord : TEXCOORD0;
-};
-
-struct v2f_init_customrendertexture
-{
-    float4 vertex : SV_POSITION;
-    float3 texcoord : TEXCOORD0;
-    float3 direction : TEXCOORD1;
-};
-
 v2f_init_customrendertexture InitCustomRenderTextureVertexShader(appdata_init_customrendertexture v)
 {
+    float2 uv = v.texcoord.xy;
     v2f_init_customrendertexture o;
+    o.direction = CustomRenderTextureComputeCubeDirection(uv);
+    o.texcoord = float3(uv, CustomRenderTexture3DTexcoordW);
     o.vertex = UnityObjectToClipPos(v.vertex);
-    o.texcoord = float3(v.texcoord.xy, CustomRenderTexture3DTexcoordW);
-    o.direction = CustomRenderTextureComputeCubeDirection(v.texcoord.xy);
     return o;
 }
 

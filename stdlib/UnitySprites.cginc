@@ -10,24 +10,26 @@
 
 #include "UnityCG.cginc"
 
+// The tint: the material's colour times the renderer's.
+fixed4 _Color;
 fixed4 _RendererColor;
+// Per-axis mirroring (+-1) and whether _AlphaTex supplies the alpha.
 fixed2 _Flip;
 float _EnableExternalAlpha;
-fixed4 _Color;        // the material's tint
 
+// Sprite mesh data and interpolators (the semantics give the locations).
 struct appdata_t
 {
     float4 vertex : POSITION;
-    float4 color : COLOR;
     float2 texcoord : TEXCOORD0;
+    float4 color : COLOR;
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
-
 struct v2f
 {
     float4 vertex : SV_POSITION;
-    fixed4 color : COLOR;
     float2 texcoord : TEXCOORD0;
+    float4 color : COLOR;
     UNITY_VERTEX_OUTPUT_STEREO
 };
 

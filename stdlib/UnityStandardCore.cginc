@@ -190,24 +190,19 @@ inline UnityGI FragmentGI(FragmentCommonData s, half occlusion, half4 i_ambientO
     return FragmentGI(s, occlusion, i_ambientOrLightmapUV, atten, light, true);
 }
 
-// Opaque and cutout variants write alpha 1; Fade/Transparent keep it.
-half4 OutputForward(half4 output, half alphaFromSurface)
-{
+// Opaque and cutout variants write alpha 1; Fade/Transparent keep the
+// surface's alpha.
 #if defined(_ALPHABLEND_ON) || defined(_ALPHAPREMULTIPLY_ON)
-    output.a = alphaFromSurface;
+half4 OutputForward(half4 output, half alphaFromSurface) { return half4(output.rgb, alphaFromSurface); }
 #else
-    UNITY_OPAQUE_ALPHA(output.a);
+half4 OutputForward(half4 output, half alphaFromSurface) { UNITY_OPAQUE_ALPHA(output.a); return output; }
 #endif
-    return output;
-}
 
 // Per-vertex ambient: facet evaluates SH per pixel (ShadeSHPerPixel), so the
-// vertex part is zero.
+// vertex part is what ShadeSHPerVertex adds to nothing.
 inline half4 VertexGIForward(VertexInput v, float3 posWorld, half3 normalWorld)
 {
-    half4 ambientOrLightmapUV = 0;
-    ambientOrLightmapUV.rgb = ShadeSHPerVertex(normalWorld, ambientOrLightmapUV.rgb);
-    return ambientOrLightmapUV;
+    return half4(ShadeSHPerVertex(normalWorld, half3(0, 0, 0)), 0);
 }
 
 // Fills the tangentToWorld rows (and the parallax view direction in w).

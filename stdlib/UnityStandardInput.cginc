@@ -14,171 +14,188 @@
 #include "UnityPBSLighting.cginc"
 #include "UnityStandardUtils.cginc"
 
-half4 _Color;
-half _Cutoff;
+// --- Material properties, grouped by what they feed -----------------------
 
+// Base colour and transparency.
+half4 _Color;
 sampler2D _MainTex;
 float4 _MainTex_ST;
+half _Cutoff;
 
-sampler2D _DetailAlbedoMap;
-float4 _DetailAlbedoMap_ST;
-
-sampler2D _BumpMap;
-half _BumpScale;
-
-sampler2D _DetailMask;
-sampler2D _DetailNormalMap;
-half _DetailNormalMapScale;
-
-sampler2D _SpecGlossMap;
-sampler2D _MetallicGlossMap;
+// Reflectance and smoothness (metallic or specular setup).
 half _Metallic;
+sampler2D _MetallicGlossMap;
+sampler2D _SpecGlossMap;
 float _Glossiness;
 float _GlossMapScale;
 
-sampler2D _OcclusionMap;
-half _OcclusionStrength;
-
+// Surface detail: normal map, detail layer (on UV0 or UV1), height.
+sampler2D _BumpMap;
+half _BumpScale;
+half _UVSec;
+sampler2D _DetailMask;
+sampler2D _DetailAlbedoMap;
+float4 _DetailAlbedoMap_ST;
+sampler2D _DetailNormalMap;
+half _DetailNormalMapScale;
 sampler2D _ParallaxMap;
 half _Parallax;
-half _UVSec;
 
-half4 _EmissionColor;
+// Occlusion and emission.
+sampler2D _OcclusionMap;
+half _OcclusionStrength;
 sampler2D _EmissionMap;
+half4 _EmissionColor;
 
+// The vertex attributes every Standard pass reads (half is float in facet).
 struct VertexInput
 {
     float4 vertex : POSITION;
-    half3 normal : NORMAL;
+    float3 normal : NORMAL;
     float2 uv0 : TEXCOORD0;
     float2 uv1 : TEXCOORD1;
 #if defined(DYNAMICLIGHTMAP_ON) || defined(UNITY_PASS_META)
     float2 uv2 : TEXCOORD2;
 #endif
 #ifdef _TANGENT_TO_WORLD
-    half4 tangent : TANGENT;
+    float4 tangent : TANGENT;
 #endif
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
+
+// --- facet's helpers --------------------------------------------------------
+
+// Combines the detail albedo with the base one as the _DETAIL_* keyword
+// says, weighted by the detail mask; without a mode the base is kept.
+half3 FacetStdApplyDetailAlbedo(half3 base, half3 detail, half mask)
+{
+#if _DETAIL_MULX2
+    return base * LerpWhiteTo(detail * unity_ColorSpaceDouble.rgb, mask);
+#elif _DETAIL_MUL
+    return base * LerpWhiteTo(detail, mask);
+#elif _DETAIL_ADD
+    return base + detail * mask;
+#elif _DETAIL_LERP
+    return lerp(base, detail, mask);
+#else
+    return base;
+#endif
+}
+
+// Blends the detail normal over the base one: replaced outright in the
+// lerp mode, otherwise combined with BlendNormals, as far as the mask goes.
+half3 FacetStdApplyDetailNormal(half3 base, half3 detail, half mask)
+{
+#if _DETAIL_LERP
+    half3 target = detail;
+#else
+    half3 target = BlendNormals(base, detail);
+#endif
+    return lerp(base, target, mask);
+}
+
+// Smoothness where a map is bound: the map's alpha (mapAlpha), unless
+// _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A moves it to the albedo's alpha;
+// either way scaled by _GlossMapScale.
+half FacetStdMapSmoothness(half mapAlpha, float2 uv)
+{
+#if defined(_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A)
+    mapAlpha = tex2D(_MainTex, uv).a;
+#endif
+    return mapAlpha * _GlossMapScale;
+}
+
+// Smoothness without a map: the _Glossiness slider, or the scaled albedo
+// alpha when the keyword says smoothness lives there.
+half FacetStdSliderSmoothness(float2 uv)
+{
+#if defined(_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A)
+    return tex2D(_MainTex, uv).a * _GlossMapScale;
+#else
+    return _Glossiness;
+#endif
+}
+
+// --- The Standard input functions ---------------------------------------
 
 // xy: main UV (tiled by _MainTex_ST); zw: detail UV from UV0 or UV1 (_UVSec),
 // tiled by _DetailAlbedoMap_ST.
 float4 TexCoords(VertexInput v)
 {
-    float4 texcoord;
-    texcoord.xy = TRANSFORM_TEX(v.uv0, _MainTex);
-    texcoord.zw = TRANSFORM_TEX(((_UVSec == 0) ? v.uv0 : v.uv1), _DetailAlbedoMap);
-    return texcoord;
+    float2 detailSource = (_UVSec == 0) ? v.uv0 : v.uv1;
+    return float4(TRANSFORM_TEX(v.uv0, _MainTex), TRANSFORM_TEX(detailSource, _DetailAlbedoMap));
 }
 
 half DetailMask(float2 uv) { return tex2D(_DetailMask, uv).a; }
 
 half3 Albedo(float4 texcoords)
 {
-    half3 albedo = _Color.rgb * tex2D(_MainTex, texcoords.xy).rgb;
+    half3 base = _Color.rgb * tex2D(_MainTex, texcoords.xy).rgb;
 #if _DETAIL
-    half mask = DetailMask(texcoords.xy);
-    half3 detailAlbedo = tex2D(_DetailAlbedoMap, texcoords.zw).rgb;
-#if _DETAIL_MULX2
-    albedo *= LerpWhiteTo(detailAlbedo * unity_ColorSpaceDouble.rgb, mask);
-#elif _DETAIL_MUL
-    albedo *= LerpWhiteTo(detailAlbedo, mask);
-#elif _DETAIL_ADD
-    albedo += detailAlbedo * mask;
-#elif _DETAIL_LERP
-    albedo = lerp(albedo, detailAlbedo, mask);
+    return FacetStdApplyDetailAlbedo(base, tex2D(_DetailAlbedoMap, texcoords.zw).rgb, DetailMask(texcoords.xy));
+#else
+    return base;
 #endif
-#endif
-    return albedo;
 }
 
 // With _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A the albedo alpha holds
 // smoothness, so only _Color.a is transparency.
 half Alpha(float2 uv)
 {
-#if defined(_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A)
-    return _Color.a;
-#else
-    return tex2D(_MainTex, uv).a * _Color.a;
+    half alpha = _Color.a;
+#if !defined(_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A)
+    alpha = tex2D(_MainTex, uv).a * alpha;
 #endif
+    return alpha;
 }
 
-half Occlusion(float2 uv)
-{
-    half occ = tex2D(_OcclusionMap, uv).g;
-    return LerpOneTo(occ, _OcclusionStrength);
-}
+half Occlusion(float2 uv) { return LerpOneTo(tex2D(_OcclusionMap, uv).g, _OcclusionStrength); }
 
 // rgb: specular colour, a: smoothness.
 half4 SpecularGloss(float2 uv)
 {
-    half4 sg;
 #ifdef _SPECGLOSSMAP
-#if defined(_SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A)
-    sg.rgb = tex2D(_SpecGlossMap, uv).rgb;
-    sg.a = tex2D(_MainTex, uv).a;
+    half4 texel = tex2D(_SpecGlossMap, uv);
+    return half4(texel.rgb, FacetStdMapSmoothness(texel.a, uv));
 #else
-    sg = tex2D(_SpecGlossMap, uv);
+    return half4(_SpecColor.rgb, FacetStdSliderSmoothness(uv));
 #endif
-    sg.a *= _GlossMapScale;
-#else
-    sg.rgb = _SpecColor.rgb;
-#ifdef _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A
-    sg.a = tex2D(_MainTex, uv).a * _GlossMapScale;
-#else
-    sg.a = _Glossiness;
-#endif
-#endif
-    return sg;
 }
 
 // x: metallic, y: smoothness.
 half2 MetallicGloss(float2 uv)
 {
-    half2 mg;
 #ifdef _METALLICGLOSSMAP
-#ifdef _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A
-    mg.r = tex2D(_MetallicGlossMap, uv).r;
-    mg.g = tex2D(_MainTex, uv).a;
+    half4 texel = tex2D(_MetallicGlossMap, uv);
+    return half2(texel.r, FacetStdMapSmoothness(texel.a, uv));
 #else
-    mg = tex2D(_MetallicGlossMap, uv).ra;
+    return half2(_Metallic, FacetStdSliderSmoothness(uv));
 #endif
-    mg.g *= _GlossMapScale;
-#else
-    mg.r = _Metallic;
-#ifdef _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A
-    mg.g = tex2D(_MainTex, uv).a * _GlossMapScale;
-#else
-    mg.g = _Glossiness;
-#endif
-#endif
-    return mg;
 }
 
 // The roughness setup: x metallic, y smoothness = 1 - roughness, the
 // roughness from _SpecGlossMap.r (with _SPECGLOSSMAP) or _Glossiness.
 half2 MetallicRough(float2 uv)
 {
-    half2 mg;
-#ifdef _METALLICGLOSSMAP
-    mg.r = tex2D(_MetallicGlossMap, uv).r;
-#else
-    mg.r = _Metallic;
-#endif
 #ifdef _SPECGLOSSMAP
-    mg.g = 1.0 - tex2D(_SpecGlossMap, uv).r;
+    half roughness = tex2D(_SpecGlossMap, uv).r;
 #else
-    mg.g = 1.0 - _Glossiness;
+    half roughness = _Glossiness;
 #endif
-    return mg;
+#ifdef _METALLICGLOSSMAP
+    half metallic = tex2D(_MetallicGlossMap, uv).r;
+#else
+    half metallic = _Metallic;
+#endif
+    return half2(metallic, 1.0 - roughness);
 }
 
 half3 Emission(float2 uv)
 {
-#ifndef _EMISSION
-    return 0;
-#else
+#ifdef _EMISSION
     return tex2D(_EmissionMap, uv).rgb * _EmissionColor.rgb;
+#else
+    return 0;
 #endif
 }
 
@@ -187,17 +204,13 @@ half3 Emission(float2 uv)
 // on top where the detail mask says (detail keywords only).
 half3 NormalInTangentSpace(float4 texcoords)
 {
-    half3 normalTangent = UnpackScaleNormal(tex2D(_BumpMap, texcoords.xy), _BumpScale);
+    half3 base = UnpackScaleNormal(tex2D(_BumpMap, texcoords.xy), _BumpScale);
 #if _DETAIL
-    half mask = DetailMask(texcoords.xy);
-    half3 detailNormalTangent = UnpackScaleNormal(tex2D(_DetailNormalMap, texcoords.zw), _DetailNormalMapScale);
-#if _DETAIL_LERP
-    normalTangent = lerp(normalTangent, detailNormalTangent, mask);
+    half3 detail = UnpackScaleNormal(tex2D(_DetailNormalMap, texcoords.zw), _DetailNormalMapScale);
+    return FacetStdApplyDetailNormal(base, detail, DetailMask(texcoords.xy));
 #else
-    normalTangent = lerp(normalTangent, BlendNormals(normalTangent, detailNormalTangent), mask);
+    return base;
 #endif
-#endif
-    return normalTangent;
 }
 #endif
 
@@ -205,13 +218,12 @@ half3 NormalInTangentSpace(float4 texcoords)
 // the height in _ParallaxMap.g scaled by _Parallax.
 float4 Parallax(float4 texcoords, half3 viewDir)
 {
-#if !defined(_PARALLAXMAP)
-    return texcoords;
-#else
-    half h = tex2D(_ParallaxMap, texcoords.xy).g;
-    float2 offset = ParallaxOffset(h, _Parallax, viewDir);
-    return float4(texcoords.xy + offset, texcoords.zw + offset);
+#if defined(_PARALLAXMAP)
+    float2 shift = ParallaxOffset(tex2D(_ParallaxMap, texcoords.xy).g, _Parallax, viewDir);
+    texcoords.xy += shift;
+    texcoords.zw += shift;
 #endif
+    return texcoords;
 }
 
 #endif // UNITY_STANDARD_INPUT_INCLUDED

@@ -5,14 +5,16 @@
 // particles against _CameraDepthTexture), _FADING_ON (camera fade),
 // _COLOROVERLAY_ON / _COLORCOLOR_ON / _COLORADDSUBDIFF_ON, _ALPHATEST_ON,
 // _ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON, _ALPHAMODULATE_ON, _NORMALMAP,
-// _EMISSION, _METALLICGLOSSMAP. The maths is in FacetParticles.hlsl.
+// _EMISSION, _METALLICGLOSSMAP. The maths is in FacetParticles.hlsl; the
+// Facet* functions below tie it to this file's properties.
 #ifndef UNITY_STANDARD_PARTICLES_INCLUDED
 #define UNITY_STANDARD_PARTICLES_INCLUDED
 
-#if _REQUIRE_UV2
+// The material keywords switch on the internal feature names.
+#ifdef _REQUIRE_UV2
 #define _FLIPBOOK_BLENDING 1
 #endif
-#if EFFECT_BUMP
+#ifdef EFFECT_BUMP
 #define _DISTORTION_ON 1
 #endif
 
@@ -20,121 +22,162 @@
 #include "UnityStandardParticleInstancing.cginc"
 #include "FacetParticles.hlsl"
 
+// Mesh data of a particle (half and fixed are float in facet; the semantics
+// fix the locations, not the member order).
 struct appdata_particles
 {
     float4 vertex : POSITION;
+    float4 color : COLOR;
     float3 normal : NORMAL;
-    fixed4 color : COLOR;
-#if defined(_FLIPBOOK_BLENDING)
-    float4 texcoords : TEXCOORD0;     // xy: this frame, zw: the next
+#ifdef _NORMALMAP
+    float4 tangent : TANGENT;
+#endif
+#ifdef _FLIPBOOK_BLENDING
+    float4 texcoords : TEXCOORD0;     // this frame in xy, the next one in zw
     float texcoordBlend : TEXCOORD1;
 #else
     float2 texcoords : TEXCOORD0;
 #endif
-#if defined(_NORMALMAP)
-    float4 tangent : TANGENT;
-#endif
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
 
-// The surface program's input.
-struct Input
-{
-    float4 color : COLOR;
-    float2 texcoord;
-#if defined(_FLIPBOOK_BLENDING)
-    float3 texcoord2AndBlend;
-#endif
-#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
-    float4 projectedPosition;         // screen position, eye depth in z
-#endif
-#if _DISTORTION_ON
-    float4 grabPassPosition;
-#endif
-};
+// --- Properties ---------------------------------------------------------------
 
-// The unlit program's interpolators.
-struct VertexOutput
-{
-    float4 vertex : SV_POSITION;
-    float4 color : COLOR;
-    UNITY_FOG_COORDS(0)
-    float2 texcoord : TEXCOORD1;
-#if defined(_FLIPBOOK_BLENDING)
-    float3 texcoord2AndBlend : TEXCOORD2;
-#endif
-#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
-    float4 projectedPosition : TEXCOORD3;
-#endif
-#if _DISTORTION_ON
-    float4 grabPassPosition : TEXCOORD4;
-#endif
-    UNITY_VERTEX_OUTPUT_STEREO
-};
-
+// Colour, alpha cut-off and the blend factor the fog choice looks at.
 sampler2D _MainTex;
 float4 _MainTex_ST;
 half4 _Color;
-sampler2D _BumpMap;
-half _BumpScale;
-sampler2D _EmissionMap;
-half3 _EmissionColor;
-sampler2D _MetallicGlossMap;
-half _Metallic;
-half _Glossiness;
-UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
-float4 _SoftParticleFadeParams;   // x = near fade, y = 1 / fade distance
-float4 _CameraFadeParams;         // x = near fade, y = 1 / fade distance
 half _Cutoff;
 int _DstBlend;
-#if _DISTORTION_ON
-sampler2D _GrabTexture;
-half _DistortionStrengthScaled;
-half _DistortionBlend;
-#endif
 #if defined(_COLORADDSUBDIFF_ON)
 half4 _ColorAddSubDiff;
 #else
 #define _ColorAddSubDiff half4(0, 0, 0, 0)
 #endif
 
+// Lit surface: normal, emission, metallic and smoothness.
+sampler2D _BumpMap;
+half _BumpScale;
+sampler2D _MetallicGlossMap;
+half _Metallic;
+half _Glossiness;
+sampler2D _EmissionMap;
+half3 _EmissionColor;
+
+// Refraction of what lies behind (EFFECT_BUMP).
+#if _DISTORTION_ON
+sampler2D _GrabTexture;
+half _DistortionStrengthScaled;
+half _DistortionBlend;
+#endif
+
+// Fading near the scene and near the camera: x near distance, y inverse
+// length of the ramp.
+UNITY_DECLARE_DEPTH_TEXTURE(_CameraDepthTexture);
+float4 _SoftParticleFadeParams;
+float4 _CameraFadeParams;
 #define SOFT_PARTICLE_NEAR_FADE _SoftParticleFadeParams.x
 #define SOFT_PARTICLE_INV_FADE_DISTANCE _SoftParticleFadeParams.y
 #define CAMERA_NEAR_FADE _CameraFadeParams.x
 #define CAMERA_INV_FADE_DISTANCE _CameraFadeParams.y
 
-fixed4 readTexture(sampler2D tex, Input input)
+// --- facet's particle helpers ----------------------------------------------
+
+// One read of a particle texture: the current frame, blended with the next
+// one (frames.xy, weight frames.z) when flipbook blending is on.
+float4 FacetParticleRead(sampler2D tex, float2 uv, float3 frames)
 {
 #ifdef _FLIPBOOK_BLENDING
-    return FacetFlipbookSample(tex, input.texcoord, input.texcoord2AndBlend.xy, input.texcoord2AndBlend.z);
+    return FacetFlipbookSample(tex, uv, frames.xy, frames.z);
 #else
-    return tex2D(tex, input.texcoord);
+    return tex2D(tex, uv);
 #endif
 }
-fixed4 readTexture(sampler2D tex, VertexOutput input)
+
+// Screen position for the fades, with the eye depth of `objectPos` in z.
+float4 FacetParticleProjectedPosition(float4 clipPos, float4 objectPos)
 {
-#ifdef _FLIPBOOK_BLENDING
-    return FacetFlipbookSample(tex, input.texcoord, input.texcoord2AndBlend.xy, input.texcoord2AndBlend.z);
+    float4 projected = ComputeScreenPos(clipPos);
+    projected.z = -UnityObjectToViewPos(objectPos).z;
+    return projected;
+}
+
+// Scales what a fade acts on: the whole colour under premultiplied alpha,
+// only alpha otherwise.
+// (ALBEDO_MUL names that part for code written against Unity's file.)
+#if defined(_ALPHAPREMULTIPLY_ON)
+#define ALBEDO_MUL albedo
 #else
-    return tex2D(tex, input.texcoord);
+#define ALBEDO_MUL albedo.a
+#endif
+void FacetParticleFade(inout half4 albedo, float fade) { ALBEDO_MUL *= fade; }
+
+float FacetParticleSoftFade(float4 projected)
+{
+    float sceneDepth = LinearEyeDepth(SAMPLE_DEPTH_TEXTURE_PROJ(_CameraDepthTexture, UNITY_PROJ_COORD(projected)));
+    return FacetSoftParticleFade(sceneDepth, projected.z, SOFT_PARTICLE_NEAR_FADE, SOFT_PARTICLE_INV_FADE_DISTANCE);
+}
+
+float FacetParticleCameraFade(float4 projected)
+{
+    return FacetCameraFade(projected.z, CAMERA_NEAR_FADE, CAMERA_INV_FADE_DISTANCE);
+}
+
+// The colour behind the particle, looked up through the normal's xy
+// (stronger where the particle is opaque) and mixed with the albedo.
+#if _DISTORTION_ON
+half3 FacetParticleDistort(half4 albedo, float3 normal, float4 grabPosition)
+{
+    float4 uv = UNITY_PROJ_COORD(grabPosition);
+    uv.xy += normal.xy * _DistortionStrengthScaled * albedo.a;
+    half3 behind = tex2Dproj(_GrabTexture, uv).rgb;
+    return lerp(behind, albedo.rgb, saturate(albedo.a - _DistortionBlend));
+}
+#endif
+
+// Alpha as written out: kept by the blended modes, 1 for opaque ones.
+half FacetParticleOutputAlpha(half alpha)
+{
+#if defined(_ALPHABLEND_ON) || defined(_ALPHAPREMULTIPLY_ON) || defined(_ALPHAOVERLAY_ON)
+    return alpha;
+#else
+    return 1;
 #endif
 }
+
+void FacetParticleAlphaTest(half alpha)
+{
+#if defined(_ALPHATEST_ON)
+    clip(alpha - _Cutoff + 0.0001);
+#endif
+}
+
+// Multiplicative blending: the albedo faded towards white by (1 - alpha).
+half3 FacetParticleModulate(half4 albedo) { return lerp(half3(1, 1, 1), albedo.rgb, albedo.a); }
+
+// The tangent-space normal of the normal map, or straight up without one.
+#if defined(_NORMALMAP)
+#define FacetParticleNormal(input) normalize(UnpackScaleNormal(readTexture(_BumpMap, input), _BumpScale))
+#else
+#define FacetParticleNormal(input) float3(0, 0, 1)
+#endif
+
+// --- Unity's particle pieces, on top of the helpers -------------------------
 
 #if defined(_COLORCOLOR_ON)
 half3 RGBtoHSV(half3 arg1) { return FacetRgbToHsv(arg1); }
 half3 HSVtoRGB(half3 arg1) { return FacetHsvToRgb(arg1); }
 #endif
 
-// Vertex-stage pieces, shared by both programs (`clipPosition` in scope).
+// Vertex stage (`v`, `o` and `clipPosition` in scope).
+#define vertColor(c)
 #if defined(_FLIPBOOK_BLENDING)
-#define vertTexcoord(v, o) \
-    o.texcoord = v.texcoords.xy; o.texcoord2AndBlend = float3(v.texcoords.zw, v.texcoordBlend);
+#define vertTexcoord(v, o) o.texcoord = v.texcoords.xy; o.texcoord2AndBlend = float3(v.texcoords.zw, v.texcoordBlend);
 #else
 #define vertTexcoord(v, o) o.texcoord = TRANSFORM_TEX(v.texcoords.xy, _MainTex);
 #endif
-#define vertColor(c)
 #if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
-#define vertFading(o) o.projectedPosition = ComputeScreenPos(clipPosition); COMPUTE_EYEDEPTH(o.projectedPosition.z);
+#define vertFading(o) o.projectedPosition = FacetParticleProjectedPosition(clipPosition, v.vertex);
 #else
 #define vertFading(o)
 #endif
@@ -143,51 +186,59 @@ half3 HSVtoRGB(half3 arg1) { return FacetHsvToRgb(arg1); }
 #else
 #define vertDistortion(o)
 #endif
+// Everything both vertex programs fill in alike (the colour stays in the mesh
+// for the surface program).
+#define FacetParticleVertexShared(v, o) vertTexcoord(v, o) vertFading(o) vertDistortion(o)
 
-// Fragment-stage pieces (`albedo` in scope; they declare softParticlesFade
-// and cameraFade). Premultiplied alpha fades the whole colour, else alpha.
-#if defined(_ALPHAPREMULTIPLY_ON)
-#define ALBEDO_MUL albedo
-#else
-#define ALBEDO_MUL albedo.a
-#endif
+// Fragment stage (`albedo` in scope; the fades declare softParticlesFade
+// and cameraFade, 1 where they are off).
 #define fragColorMode(i) albedo = FacetParticleColorMode(albedo, i.color, _ColorAddSubDiff);
 #if defined(SOFTPARTICLES_ON) && defined(_FADING_ON)
-#define fragSoftParticles(i) \
-    float softParticlesFade = FacetSoftParticleFade( \
-        LinearEyeDepth(SAMPLE_DEPTH_TEXTURE_PROJ(_CameraDepthTexture, UNITY_PROJ_COORD(i.projectedPosition))), \
-        i.projectedPosition.z, SOFT_PARTICLE_NEAR_FADE, SOFT_PARTICLE_INV_FADE_DISTANCE); \
-    ALBEDO_MUL *= softParticlesFade;
+#define fragSoftParticles(i) float softParticlesFade = FacetParticleSoftFade(i.projectedPosition); FacetParticleFade(albedo, softParticlesFade);
 #else
 #define fragSoftParticles(i) float softParticlesFade = 1.0;
 #endif
 #if defined(_FADING_ON)
-#define fragCameraFading(i) \
-    float cameraFade = FacetCameraFade(i.projectedPosition.z, CAMERA_NEAR_FADE, CAMERA_INV_FADE_DISTANCE); \
-    ALBEDO_MUL *= cameraFade;
+#define fragCameraFading(i) float cameraFade = FacetParticleCameraFade(i.projectedPosition); FacetParticleFade(albedo, cameraFade);
 #else
 #define fragCameraFading(i) float cameraFade = 1.0;
 #endif
-// Distortion: the grab pass seen through the normal's xy, mixed by alpha.
 #if _DISTORTION_ON
-#define fragDistortion(i) \
-    { \
-        float4 grabUV = UNITY_PROJ_COORD(i.grabPassPosition); \
-        grabUV.xy += normal.xy * _DistortionStrengthScaled * albedo.a; \
-        albedo.rgb = lerp(tex2Dproj(_GrabTexture, grabUV).rgb, albedo.rgb, saturate(albedo.a - _DistortionBlend)); \
-    }
+#define fragDistortion(i) albedo.rgb = FacetParticleDistort(albedo, normal, i.grabPassPosition);
 #else
 #define fragDistortion(i)
+#endif
+
+// --- The surface program ---------------------------------------------------------
+
+// What surf reads: UV and colour, plus the second flipbook frame, the
+// projected position of the fades and the grab-pass position where on.
+struct Input
+{
+    float2 texcoord;
+    float4 color : COLOR;
+#ifdef _FLIPBOOK_BLENDING
+    float3 texcoord2AndBlend;
+#endif
+#if _DISTORTION_ON
+    float4 grabPassPosition;
+#endif
+#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
+    float4 projectedPosition;         // eye depth in z
+#endif
+};
+
+#if defined(_FLIPBOOK_BLENDING)
+fixed4 readTexture(sampler2D tex, Input input) { return FacetParticleRead(tex, input.texcoord, input.texcoord2AndBlend); }
+#else
+fixed4 readTexture(sampler2D tex, Input input) { return FacetParticleRead(tex, input.texcoord, 0); }
 #endif
 
 void vert(inout appdata_particles v, out Input o)
 {
     UNITY_INITIALIZE_OUTPUT(Input, o);
     float4 clipPosition = UnityObjectToClipPos(v.vertex);
-    vertColor(v.color);
-    vertTexcoord(v, o);
-    vertFading(o);
-    vertDistortion(o);
+    FacetParticleVertexShared(v, o);
 }
 
 void surf(Input input, inout SurfaceOutputStandard o)
@@ -196,42 +247,69 @@ void surf(Input input, inout SurfaceOutputStandard o)
     fragColorMode(input);
     fragSoftParticles(input);
     fragCameraFading(input);
-#if defined(_METALLICGLOSSMAP)
-    fixed2 metallicGloss = readTexture(_MetallicGlossMap, input).ra * fixed2(1.0, _Glossiness);
-#else
-    fixed2 metallicGloss = fixed2(_Metallic, _Glossiness);
-#endif
-#if defined(_NORMALMAP)
-    float3 normal = normalize(UnpackScaleNormal(readTexture(_BumpMap, input), _BumpScale));
-#else
-    float3 normal = float3(0, 0, 1);
-#endif
-#if defined(_EMISSION)
-    half3 emission = readTexture(_EmissionMap, input).rgb * cameraFade * softParticlesFade;
-#else
-    half3 emission = 0;
-#endif
+    float3 normal = FacetParticleNormal(input);
     fragDistortion(input);
 
-    o.Albedo = albedo.rgb;
+#if defined(_METALLICGLOSSMAP)
+    half2 surface = readTexture(_MetallicGlossMap, input).ra * half2(1.0, _Glossiness);
+#else
+    half2 surface = half2(_Metallic, _Glossiness);
+#endif
+    o.Metallic = surface.x;
+    o.Smoothness = surface.y;
 #if defined(_NORMALMAP)
     o.Normal = normal;
 #endif
-    o.Emission = emission * _EmissionColor;
-    o.Metallic = metallicGloss.r;
-    o.Smoothness = metallicGloss.g;
-#if defined(_ALPHABLEND_ON) || defined(_ALPHAPREMULTIPLY_ON) || defined(_ALPHAOVERLAY_ON)
-    o.Alpha = albedo.a;
+#if defined(_EMISSION)
+    o.Emission = readTexture(_EmissionMap, input).rgb * cameraFade * softParticlesFade * _EmissionColor;
 #else
-    o.Alpha = 1;
+    o.Emission = 0;
 #endif
 #if defined(_ALPHAMODULATE_ON)
-    o.Albedo = lerp(half3(1, 1, 1), albedo.rgb, albedo.a);
+    o.Albedo = FacetParticleModulate(albedo);
+#else
+    o.Albedo = albedo.rgb;
 #endif
-#if defined(_ALPHATEST_ON)
-    clip(albedo.a - _Cutoff + 0.0001);
-#endif
+    o.Alpha = FacetParticleOutputAlpha(albedo.a);
+    FacetParticleAlphaTest(albedo.a);
 }
+
+// --- The unlit program ----------------------------------------------------------
+
+// The unlit program's interpolators (the same optional members as Input).
+struct VertexOutput
+{
+    float4 vertex : SV_POSITION;
+    float2 texcoord : TEXCOORD1;
+    float4 color : COLOR;
+#ifdef _FLIPBOOK_BLENDING
+    float3 texcoord2AndBlend : TEXCOORD2;
+#endif
+#if _DISTORTION_ON
+    float4 grabPassPosition : TEXCOORD4;
+#endif
+#if defined(SOFTPARTICLES_ON) || defined(_FADING_ON)
+    float4 projectedPosition : TEXCOORD3;
+#endif
+    UNITY_FOG_COORDS(0)
+    UNITY_VERTEX_OUTPUT_STEREO
+};
+
+#if defined(_FLIPBOOK_BLENDING)
+fixed4 readTexture(sampler2D tex, VertexOutput input) { return FacetParticleRead(tex, input.texcoord, input.texcoord2AndBlend); }
+#else
+fixed4 readTexture(sampler2D tex, VertexOutput input) { return FacetParticleRead(tex, input.texcoord, 0); }
+#endif
+
+// The fog colour of the unlit program: white for multiplicative blending,
+// black for additive (one-one) blending, the scene's fog colour otherwise.
+#if defined(_ALPHAMODULATE_ON)
+#define FacetParticleApplyFog(fogCoord, color) UNITY_APPLY_FOG_COLOR(fogCoord, color, fixed4(1, 1, 1, 0))
+#elif !defined(_ALPHATEST_ON) && defined(_ALPHABLEND_ON) && !defined(_ALPHAPREMULTIPLY_ON)
+#define FacetParticleApplyFog(fogCoord, color) UNITY_APPLY_FOG_COLOR(fogCoord, color, (_DstBlend == 1 ? fixed4(0, 0, 0, 0) : unity_FogColor))
+#else
+#define FacetParticleApplyFog(fogCoord, color) UNITY_APPLY_FOG(fogCoord, color)
+#endif
 
 void vertParticleUnlit(appdata_particles v, out VertexOutput o)
 {
@@ -239,13 +317,10 @@ void vertParticleUnlit(appdata_particles v, out VertexOutput o)
     UNITY_INITIALIZE_OUTPUT(VertexOutput, o);
     UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
     float4 clipPosition = UnityObjectToClipPos(v.vertex);
+    FacetParticleVertexShared(v, o);
     o.vertex = clipPosition;
     o.color = v.color;
-    vertColor(o.color);
-    vertTexcoord(v, o);
-    vertFading(o);
-    vertDistortion(o);
-    UNITY_TRANSFER_FOG(o, o.vertex);
+    UNITY_TRANSFER_FOG(o, clipPosition);
 }
 
 half4 fragParticleUnlit(VertexOutput input) : SV_Target
@@ -254,38 +329,19 @@ half4 fragParticleUnlit(VertexOutput input) : SV_Target
     fragColorMode(input);
     fragSoftParticles(input);
     fragCameraFading(input);
-#if defined(_NORMALMAP)
-    float3 normal = normalize(UnpackScaleNormal(readTexture(_BumpMap, input), _BumpScale));
-#else
-    float3 normal = float3(0, 0, 1);
-#endif
-#if defined(_EMISSION)
-    half3 emission = readTexture(_EmissionMap, input).rgb;
-#else
-    half3 emission = 0;
-#endif
+    float3 normal = FacetParticleNormal(input);
     fragDistortion(input);
 
     half4 result = albedo;
 #if defined(_ALPHAMODULATE_ON)
-    result.rgb = lerp(half3(1, 1, 1), albedo.rgb, albedo.a);
+    result.rgb = FacetParticleModulate(albedo);
 #endif
-    result.rgb += emission * _EmissionColor * cameraFade * softParticlesFade;
-#if !defined(_ALPHABLEND_ON) && !defined(_ALPHAPREMULTIPLY_ON) && !defined(_ALPHAOVERLAY_ON)
-    result.a = 1;
+#if defined(_EMISSION)
+    result.rgb += readTexture(_EmissionMap, input).rgb * _EmissionColor * cameraFade * softParticlesFade;
 #endif
-#if defined(_ALPHATEST_ON)
-    clip(albedo.a - _Cutoff + 0.0001);
-#endif
-    // Fog: towards white for modulate, black for additive blending, else the fog colour.
-#if defined(_ALPHAMODULATE_ON)
-    UNITY_APPLY_FOG_COLOR(input.fogCoord, result, fixed4(1, 1, 1, 0));
-#elif !defined(_ALPHATEST_ON) && defined(_ALPHABLEND_ON) && !defined(_ALPHAPREMULTIPLY_ON)
-    fixed4 fogColor = _DstBlend == 1 ? fixed4(0, 0, 0, 0) : unity_FogColor;
-    UNITY_APPLY_FOG_COLOR(input.fogCoord, result, fogColor);
-#else
-    UNITY_APPLY_FOG(input.fogCoord, result);
-#endif
+    result.a = FacetParticleOutputAlpha(result.a);
+    FacetParticleAlphaTest(albedo.a);
+    FacetParticleApplyFog(input.fogCoord, result);
     return result;
 }
 

@@ -9,104 +9,106 @@
 #ifndef UNITY_UIE_INCLUDED
 #define UNITY_UIE_INCLUDED
 
-// Configuration (a shader may preset each).
-#ifndef UIE_SIMPLE_ATLAS
-#if SHADER_TARGET < 35
-#define UIE_SIMPLE_ATLAS 1   // one bilinear sampler for the atlas
-#else
-#define UIE_SIMPLE_ATLAS 0   // point and bilinear atlas samplers, chosen per vertex
-#endif
-#endif
-#if SHADER_TARGET >= 30
-#define UIE_SHADER_INFO_IN_VS 1
-#else
-#define UIE_SHADER_INFO_IN_VS 0
-#endif
-#ifndef UIE_COLORSPACE_GAMMA
-#ifdef UNITY_COLORSPACE_GAMMA
+// Configuration; a shader may preset each of these before the include.
+// Colour space: gamma projects interpolate and write fixed colours.
+#if !defined(UIE_COLORSPACE_GAMMA) && defined(UNITY_COLORSPACE_GAMMA)
 #define UIE_COLORSPACE_GAMMA 1
-#else
+#elif !defined(UIE_COLORSPACE_GAMMA)
 #define UIE_COLORSPACE_GAMMA 0
 #endif
-#endif
-#ifndef UIE_FRAG_T
-#if UIE_COLORSPACE_GAMMA
-#define UIE_FRAG_T fixed4
-#else
-#define UIE_FRAG_T half4
-#endif
-#endif
-#ifndef UIE_V2F_COLOR_T
-#if UIE_COLORSPACE_GAMMA
+#if !defined(UIE_V2F_COLOR_T) && UIE_COLORSPACE_GAMMA
 #define UIE_V2F_COLOR_T fixed4
-#else
+#elif !defined(UIE_V2F_COLOR_T)
 #define UIE_V2F_COLOR_T half4
 #endif
+#if !defined(UIE_FRAG_T) && UIE_COLORSPACE_GAMMA
+#define UIE_FRAG_T fixed4
+#elif !defined(UIE_FRAG_T)
+#define UIE_FRAG_T half4
 #endif
-// Element slots of the constant arrays (below shader model 3.0 only).
+// Below shader model 3.0 the per-element data lives in constant arrays of
+// UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS slots, and one bilinear sampler serves
+// the atlas (point and bilinear samplers, chosen per vertex, otherwise).
+#if SHADER_TARGET < 30
+#define UIE_SHADER_INFO_IN_VS 0
+#else
+#define UIE_SHADER_INFO_IN_VS 1
+#endif
+#if !defined(UIE_SIMPLE_ATLAS) && SHADER_TARGET < 35
+#define UIE_SIMPLE_ATLAS 1
+#elif !defined(UIE_SIMPLE_ATLAS)
+#define UIE_SIMPLE_ATLAS 0
+#endif
 #ifndef UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS
 #define UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS 20
 #endif
 
 #include "UnityCG.cginc"
 
+// The per-element data: a texture of shader-info texels, or (below shader
+// model 3.0) constant arrays of transform rows and clip rectangles.
+sampler2D _ShaderInfoTex;
+float4 _ShaderInfoTex_TexelSize;
+#if !UIE_SHADER_INFO_IN_VS
+CBUFFER_START(UIClipRects)
+float4 _ClipRects[UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS];   // one rectangle per element
+CBUFFER_END
+CBUFFER_START(UITransforms)
+float4 _Transforms[UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS * 3];   // three rows per element
+CBUFFER_END
+#endif
+float4 _PixelClipRect;       // framebuffer pixels: (xMin, yMin, xMax, yMax)
+float4 _1PixelClipInvView;   // xy: one pixel in clip space; zw: one view unit in pixels
+
+// What the geometry samples: the atlas, the font, a custom texture and the
+// SVG gradient settings.
 #if UIE_SIMPLE_ATLAS
 sampler2D _MainTex;
 #else
 Texture2D _MainTex;
 #endif
-float4 _MainTex_ST;
-float4 _MainTex_TexelSize;
 SamplerState uie_point_clamp_sampler;
 SamplerState uie_linear_clamp_sampler;
+float4 _MainTex_TexelSize;
+float4 _MainTex_ST;
 sampler2D _FontTex;
 float4 _FontTex_ST;
 sampler2D _CustomTex;
-float4 _CustomTex_ST;
 float4 _CustomTex_TexelSize;
+float4 _CustomTex_ST;
 sampler2D _GradientSettingsTex;
-float4 _GradientSettingsTex_ST;
 float4 _GradientSettingsTex_TexelSize;
-sampler2D _ShaderInfoTex;
-float4 _ShaderInfoTex_TexelSize;
-float4 _1PixelClipInvView;   // xy: one pixel in clip space; zw: one view unit in pixels
-float4 _PixelClipRect;       // framebuffer pixels: (xMin, yMin, xMax, yMax)
-
-#if !UIE_SHADER_INFO_IN_VS
-CBUFFER_START(UITransforms)
-float4 _Transforms[UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS * 3];
-CBUFFER_END
-CBUFFER_START(UIClipRects)
-float4 _ClipRects[UIE_SKIN_ELEMS_COUNT_MAX_CONSTANTS];
-CBUFFER_END
-#endif
+float4 _GradientSettingsTex_ST;
 
 // sRGB vertex colours to linear (UIGammaToLinear, UnityUI.cginc's exact
 // curve) and back.
 half3 uie_gamma_to_linear(half3 value) { return FacetSrgbToLinear(value); }
 half3 uie_linear_to_gamma(half3 value) { return FacetLinearToSrgb(value); }
 
+// The vertex layout the renderer writes (the semantics give the locations).
 struct appdata_t
 {
     float4 vertex : POSITION;
-    float4 color : COLOR;
     float2 uv : TEXCOORD0;
-    float4 xformClipPages : TEXCOORD1;              // shader-info pages: transform xy, clip rect zw
+    float4 color : COLOR;
     float4 idsFlags : TEXCOORD2;                    // ids: x transform, y clip rect, z opacity; w flags
+    float4 xformClipPages : TEXCOORD1;              // shader-info pages: transform xy, clip rect zw
     float4 opacityPageSVGSettingIndex : TEXCOORD3;  // xy opacity page, zw SVG setting index (2 bytes)
     UNITY_VERTEX_INPUT_INSTANCE_ID
 };
 
+// The flags and rectangles are the same over a primitive, so they are not
+// interpolated.
 struct v2f
 {
     float4 vertex : SV_POSITION;
-    UIE_V2F_COLOR_T color : COLOR;
     float4 uvXY : TEXCOORD0;                        // xy uv, zw position in points
-    nointerpolation fixed4 flags : TEXCOORD1;       // text, atlas, custom texture, solid
-    nointerpolation fixed3 svgFlags : TEXCOORD2;    // SVG gradient, custom SVG gradient, setting index
-    nointerpolation fixed4 clipRectOpacityUVs : TEXCOORD3;
+    UIE_V2F_COLOR_T color : COLOR;
+    nointerpolation float4 flags : TEXCOORD1;       // text, atlas, custom texture, solid
+    nointerpolation float3 svgFlags : TEXCOORD2;    // SVG gradient, custom SVG gradient, setting index
+    nointerpolation float4 clipRectOpacityUVs : TEXCOORD3;
 #if UIE_SHADER_INFO_IN_VS
-    nointerpolation fixed4 clipRect : TEXCOORD4;
+    nointerpolation float4 clipRect : TEXCOORD4;
 #endif
     UNITY_VERTEX_OUTPUT_STEREO
 };
