@@ -251,15 +251,15 @@ std::vector<std::string> output_paths(const FacetcArgs& args, const Produced& pr
 bool write_outputs(const FacetcArgs& args, const std::string& input, const Produced& produced,
                    const SourceMap& sources, Console& console, Diagnostics& diags,
                    std::vector<std::string>& read_before) {
-  std::vector<std::string> deps = dependencies(input, sources, {});
-  // The includes of programs that came from the cache count as inputs too.
+  // The includes of programs that came from the cache count as inputs too,
+  // and belong in the depfile: a warm build must name what a cold one does.
   std::vector<std::string> read = dependencies(input, sources, produced.dependencies);
   std::vector<RunInput> inputs = run_inputs(args, input, read, read_before);
   read_before.insert(read_before.end(), read.begin(), read.end());
   if (!outputs_spare_inputs(output_paths(args, produced), inputs, diags)) return false;
   std::string target = !args.dep_target.empty() ? args.dep_target
                        : to_stdout(produced.output) ? package_output_path(args, input) : produced.output;
-  std::string rule = make_rule(target, deps);
+  std::string rule = make_rule(target, read);
   if (args.mode == Mode::depfile_only) {
     if (args.depfile.empty()) {
       console.out << rule;
