@@ -93,7 +93,8 @@ void append_pass_define(std::string& out, const ir::Program& program, const Back
     if (upper(program.light_mode) != upper(mode)) continue;
     bool own = defines_macro(program.body.text, name) ||
                std::any_of(program.includes.begin(), program.includes.end(),
-                           [&](const ir::SourceChunk& c) { return defines_macro(c.text, name); });
+                           // `name = name`: clang before 16 cannot capture a structured binding.
+                           [name = name](const ir::SourceChunk& c) { return defines_macro(c.text, name); });
     if (!own) out += fmt::format("#define {} 1\n", name);
   }
 }

@@ -1,0 +1,11 @@
+// Arbitrary bytes as a scene JSON file through the runtime's scene reader
+// (facet/runtime/scene.h). parse_scene only resolves the paths it names; it
+// opens no file.
+#include "facet/runtime/scene.h"
+#include "fuzz_support.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const std::string path = facet::fuzz::TempDir::get().file("scene.json");
+  (void)facet::runtime::parse_scene(std::string(facet::fuzz::as_text(data, size)), path);
+  return 0;
+}
