@@ -161,14 +161,20 @@ struct Pass {
   std::string tag(std::string_view key) const;
 };
 
+// A program block directly in a SubShader: a surface shader, lowered into
+// passes by compiler/surface. Its passes go where the block is written:
+// before passes[before_pass] (passes.size(): after every Pass).
+struct SurfaceProgram {
+  Program program;
+  size_t before_pass = 0;
+};
+
 struct SubShader {
   std::vector<Tag> tags;
   int lod = 0;  // 0 when not given
   RenderState state;
   std::vector<Pass> passes;  // in file order
-  // A program block directly in the SubShader: a surface shader, lowered into
-  // passes by compiler/surface.
-  std::optional<Program> surface_program;
+  std::vector<SurfaceProgram> surface_programs;  // in file order; Unity allows several
   SourceSpan span;
 };
 

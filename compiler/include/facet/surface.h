@@ -12,8 +12,8 @@
 
 namespace facet::surface {
 
-// Replaces each SubShader's surface_program with its generated passes,
-// placed before the SubShader's written passes. Which Input fields `surf`
+// Replaces each SubShader's surface programs with their generated passes,
+// placed where each program block is written among the SubShader's passes. Which Input fields `surf`
 // reads, which outputs it writes and the lighting function's form are read
 // from glslang's AST of the user's code (facet/program_analysis.h). The
 // generated code is added to `sources` as a file of its own, named

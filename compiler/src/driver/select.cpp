@@ -71,8 +71,8 @@ Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shad
   // Every SubShader targets Vulkan-class hardware, so the first one is used.
   const size_t sub_index = 0;
   const ir::SubShader& sub = shader.subshaders[sub_index];
-  if (sub.surface_program) {
-    diags.add(DiagId::driver_surface_unsupported, sub.surface_program->body.span,
+  if (!sub.surface_programs.empty()) {
+    diags.add(DiagId::driver_surface_unsupported, sub.surface_programs[0].program.body.span,
               "surface shaders ('#pragma surface') are not supported by this version of facet yet");
     return failure("surface shader");
   }

@@ -166,7 +166,13 @@ Json subshader(const ir::SubShader& s) {
   j["tags"] = tags(s.tags);
   j["lod"] = s.lod;
   j["state"] = state(s.state);
-  if (s.surface_program) j["surface_program"] = program(*s.surface_program);
+  if (!s.surface_programs.empty()) {
+    Json surface = Json::array();
+    for (const ir::SurfaceProgram& sp : s.surface_programs) {
+      surface.push_back({{"program", program(sp.program)}, {"before_pass", sp.before_pass}});
+    }
+    j["surface_programs"] = surface;
+  }
   Json passes = Json::array();
   for (const ir::Pass& p : s.passes) passes.push_back(pass(p));
   j["passes"] = passes;

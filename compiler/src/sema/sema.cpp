@@ -89,25 +89,21 @@ ir::Pass lower_pass(const ast::Pass& p, const ir::SubShader& sub, const std::vec
   return out;
 }
 
-// Program blocks directly in a SubShader are surface shaders; there is at
-// most one.
-void lower_surface_program(const ast::SubShader& sub, const std::vector<const ast::ProgramBlock*>& includes,
-                           ir::SubShader& out, Context& ctx) {
-  for (size_t i = 0; i < sub.programs.size(); ++i) {
-    const ast::ProgramBlock& block = sub.programs[i];
-    if (i > 0) {
-      ctx.error(DiagId::sema_multiple_surface_programs, block.keyword_span,
-                "a SubShader holds at most one surface program")
-          .note(sub.programs[0].keyword_span, "the first one is here");
-      continue;
-    }
+// Program blocks directly in a SubShader are surface shaders; there may be
+// several (Unity lowers each into its own passes, in file order: multi-layer
+// fur and outline shaders stack them).
+void lower_surface_programs(const ast::SubShader& sub, const std::vector<const ast::ProgramBlock*>& includes,
+                            ir::SubShader& out, Context& ctx) {
+  for (const ast::ProgramBlock& block : sub.programs) {
     ir::Program program = lower_program(block, includes, ctx);
     if (!program.is_surface()) {
       ctx.error(DiagId::sema_program_outside_pass, block.keyword_span,
                 "a program block outside a Pass must be a surface shader")
           .note({}, "add '#pragma surface surf Lambert' (or your functions), or put the program in a Pass");
     }
-    out.surface_program = std::move(program);
+    size_t before = 0;
+    while (before < sub.passes.size() && sub.passes[before].span.begin < block.keyword_span.begin) ++before;
+    out.surface_programs.push_back({.program = std::move(program), .before_pass = before});
   }
 }
 
@@ -119,7 +115,7 @@ ir::SubShader lower_subshader(const ast::SubShader& sub, const Scope& scope, Con
   out.state = merge_state(scope.state, lower_state(sub.state, ctx));
   out.span = sub.span;
   auto includes = with_includes(scope.includes, sub.includes);
-  lower_surface_program(sub, includes, out, ctx);
+  lower_surface_programs(sub, includes, out, ctx);
   for (const ast::Pass& p : sub.passes) out.passes.push_back(lower_pass(p, out, includes, ctx));
   propagate_lightmode(sub, out.tags, out.passes, ctx);
   return out;

@@ -174,16 +174,18 @@ bool declares(const ir::Program& program, const std::string& name) {
   return std::any_of(program.includes.begin(), program.includes.end(), [&](const ir::SourceChunk& c) { return in(c.text); });
 }
 
-Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubShader& sub, size_t sub_index,
-                                        const backend::BackendOptions& options, SourceMap& sources, Diagnostics& diags) {
-  const ir::Program& user = *sub.surface_program;
+// `tag` names the program in generated file names (" SubShader 1 #2").
+// `first`: the SubShader's first surface program, the one that stands in
+// for the Fallback's shadow caster (one ShadowCaster pass is enough).
+Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubShader& sub, const ir::Program& user,
+                                        const std::string& tag, bool first, const backend::BackendOptions& options,
+                                        SourceMap& sources, Diagnostics& diags) {
   const ir::Pragma* p = surface_pragma(user);
   if (!p) FACET_ICE("a surface program without '#pragma surface'");
   auto directive = parse_directive(*p, diags);
   FACET_TRY(directive);
 
   const std::string base = shader.file != kNoFile ? sources.path(shader.file) : std::string("<shader>");
-  const std::string tag = sub_index ? fmt::format(" SubShader {}", sub_index) : std::string();
   GeneratedFile probe = add_generated_file(fmt::format("{} [surface analysis{}]", base, tag),
                                            {analysis_prologue(), ""}, sources);
   backend::BackendOptions analysis_options = options;
@@ -197,7 +199,7 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
   }
 
   std::vector<ir::Pass> out;
-  for (const PassInfo& info : passes_for(*directive, shader.fallback.has_value())) {
+  for (const PassInfo& info : passes_for(*directive, first && shader.fallback.has_value())) {
     GeneratedCode code = generate(info.kind, *directive, *shape, output_fields,
                                   [&](const std::string& name) { return declares(user, name); });
     GeneratedFile file = add_generated_file(fmt::format("{} [surface {}{}]", base, info.name, tag), code, sources);
@@ -222,14 +224,28 @@ Result<void> lower_surface_shaders(ir::Shader& shader, const backend::BackendOpt
   bool failed = false;
   for (size_t i = 0; i < shader.subshaders.size(); ++i) {
     ir::SubShader& sub = shader.subshaders[i];
-    if (!sub.surface_program) continue;
-    auto passes = lower_one(shader, sub, i, options, sources, diags);
-    if (!passes) {
-      failed = true;
-      continue;
+    if (sub.surface_programs.empty()) continue;
+    // Each program's passes go before the Pass written after it.
+    std::vector<std::vector<ir::Pass>> before(sub.passes.size() + 1);
+    for (size_t k = 0; k < sub.surface_programs.size(); ++k) {
+      const ir::SurfaceProgram& sp = sub.surface_programs[k];
+      std::string tag = (i ? fmt::format(" SubShader {}", i) : std::string()) +
+                        (sub.surface_programs.size() > 1 ? fmt::format(" #{}", k + 1) : std::string());
+      auto passes = lower_one(shader, sub, sp.program, tag, k == 0, options, sources, diags);
+      if (!passes) {
+        failed = true;
+        continue;
+      }
+      std::vector<ir::Pass>& slot = before[std::min(sp.before_pass, sub.passes.size())];
+      slot.insert(slot.end(), passes->begin(), passes->end());
     }
-    sub.passes.insert(sub.passes.begin(), passes->begin(), passes->end());
-    sub.surface_program.reset();
+    std::vector<ir::Pass> ordered;
+    for (size_t p = 0; p <= sub.passes.size(); ++p) {
+      for (ir::Pass& generated : before[p]) ordered.push_back(std::move(generated));
+      if (p < sub.passes.size()) ordered.push_back(std::move(sub.passes[p]));
+    }
+    sub.passes = std::move(ordered);
+    sub.surface_programs.clear();
   }
   if (failed) return failure("surface shader errors");
   return {};

@@ -297,3 +297,45 @@ TEST(SurfaceLoweringTest, FinalColorScreenPosDecalAndKeepAlphaCompile) {
 
 }  // namespace
 }  // namespace facet
+
+namespace facet {
+namespace {
+
+// Two surface programs around a written Pass (a two-layer shader): each
+// program's passes stand where it is written, and every variant compiles.
+TEST(SurfaceLoweringTest, SeveralSurfaceProgramsLowerInFileOrder) {
+  Compiler compiler;
+  auto l = load_text(compiler, R"(Shader "T/Layers" {
+Properties { _MainTex ("Tex", 2D) = "white" {} }
+SubShader {
+  CGPROGRAM
+  #pragma surface inner Lambert
+  sampler2D _MainTex;
+  struct Input { float2 uv_MainTex; };
+  void inner(Input IN, inout SurfaceOutput o) { o.Albedo = tex2D(_MainTex, IN.uv_MainTex).rgb; }
+  ENDCG
+  Pass { Name "OUTLINE" ColorMask 0 }
+  CGPROGRAM
+  #pragma surface outer Lambert alpha:fade noforwardadd
+  sampler2D _MainTex;
+  struct Input { float2 uv_MainTex; };
+  void outer(Input IN, inout SurfaceOutput o) { o.Albedo = 1; o.Alpha = tex2D(_MainTex, IN.uv_MainTex).a * 0.5; }
+  ENDCG
+}
+Fallback "Diffuse"
+})");
+  ASSERT_TRUE(l->shader) << render_text(l->diags, l->sources);
+  const ir::SubShader& sub = l->shader->subshaders[0];
+  std::vector<std::string> names;
+  for (const ir::Pass& p : sub.passes) names.push_back(p.name + ":" + p.tag("LightMode"));
+  EXPECT_EQ(names, (std::vector<std::string>{"FORWARD:ForwardBase", "FORWARD_DELTA:ForwardAdd",
+                                             "ShadowCaster:ShadowCaster", "OUTLINE:", "FORWARD:ForwardBase"}));
+  EXPECT_NE(generated_text(*l, "FORWARD #1").find("inner("), std::string::npos);
+  EXPECT_NE(generated_text(*l, "FORWARD #2").find("outer("), std::string::npos);
+  Diagnostics diags;
+  auto compiled = compiler.compile(*l->shader, {}, l->sources, diags);
+  EXPECT_TRUE(compiled && !diags.has_errors()) << render_text(diags, l->sources);
+}
+
+}  // namespace
+}  // namespace facet

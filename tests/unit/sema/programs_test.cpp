@@ -231,10 +231,11 @@ TEST(SemaProgramsTest, ProgramInSubShaderIsTheSurfaceProgram) {
     ENDCG } FallBack "Diffuse" })");
   ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
   const ir::SubShader& sub = a->ir->subshaders[0];
-  ASSERT_TRUE(sub.surface_program);
-  EXPECT_TRUE(sub.surface_program->is_surface());
-  EXPECT_EQ(sub.surface_program->surface_function, "surf");
-  EXPECT_EQ(sub.surface_program->pragmas[0].args,
+  ASSERT_EQ(sub.surface_programs.size(), 1u);
+  const ir::Program& surface = sub.surface_programs[0].program;
+  EXPECT_TRUE(surface.is_surface());
+  EXPECT_EQ(surface.surface_function, "surf");
+  EXPECT_EQ(surface.pragmas[0].args,
             (std::vector<std::string>{"surf", "Standard", "fullforwardshadows", "vertex:vert"}));
   EXPECT_TRUE(sub.passes.empty());
 }
@@ -256,15 +257,18 @@ TEST(SemaProgramsTest, ProgramOutsidePassNeedsSurfacePragma) {
   EXPECT_EQ(a->at(d->span).column, 3u);
 }
 
-TEST(SemaProgramsTest, SecondSurfaceProgramIsAnError) {
+TEST(SemaProgramsTest, SeveralSurfaceProgramsAreKeptWithTheirPlaceAmongThePasses) {
   auto a = analyze_text(
       "Shader \"T\" { SubShader {\nCGPROGRAM\n#pragma surface a Lambert\nENDCG\n"
-      "CGPROGRAM\n#pragma surface b Lambert\nENDCG } }");
-  EXPECT_FALSE(a->ir);
-  const Diagnostic* d = a->find(DiagId::sema_multiple_surface_programs);
-  ASSERT_NE(d, nullptr);
-  EXPECT_EQ(a->at(d->span).line, 5u);
-  EXPECT_EQ(a->at(d->notes.at(0).span).line, 2u);
+      "Pass { ColorMask 0 }\n"
+      "CGPROGRAM\n#pragma surface b Lambert\nENDCG\nPass { ZWrite Off } } }");
+  ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
+  const ir::SubShader& sub = a->ir->subshaders[0];
+  ASSERT_EQ(sub.surface_programs.size(), 2u);
+  EXPECT_EQ(sub.surface_programs[0].program.surface_function, "a");
+  EXPECT_EQ(sub.surface_programs[0].before_pass, 0u);
+  EXPECT_EQ(sub.surface_programs[1].program.surface_function, "b");
+  EXPECT_EQ(sub.surface_programs[1].before_pass, 1u);
 }
 
 TEST(SemaProgramsTest, IncludesCopiedIntoManyPassesAreBounded) {
