@@ -11,6 +11,7 @@ packages=(
   libtbb-dev libtinyobjloader-dev clang-14 libclang-rt-14-dev libcurl4-openssl-dev libssl-dev glslc
   chromium
   python3-jsonschema libxml2-utils  # facetc --check's report tests validate SARIF and JUnit with them
+  nginx  # the remote-cache tests run it as a WebDAV server (its dav module is built in)
 )
 
 missing=()
