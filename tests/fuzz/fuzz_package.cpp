@@ -16,7 +16,7 @@ namespace {
 using namespace facet;
 
 void write_seeds(const std::string& dir) {
-  for (const char* name : {"VertexColor", "Keywords", "Diffuse"}) {
+  for (const char* name : {"VertexColor", "Unlit", "Diffuse"}) {
     CompiledShader compiled = fuzz::compile_example(std::string("examples/shaders/") + name + ".shader");
     std::vector<uint8_t> bytes = package::write_package(compiled.package);
     fuzz::write_seed(dir, std::string(name) + ".facetpkg",

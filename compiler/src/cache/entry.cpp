@@ -80,7 +80,7 @@ class Reader {
     uint64_t n = 0;
     if (!u64(n) || n > (bytes_.size() - pos_) / 4) return false;
     out.resize(n);
-    std::memcpy(out.data(), bytes_.data() + pos_, n * 4);
+    if (n > 0) std::memcpy(out.data(), bytes_.data() + pos_, n * 4);  // an empty vector's data() may be null
     pos_ += n * 4;
     return true;
   }
