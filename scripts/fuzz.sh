@@ -16,7 +16,9 @@
 # Environment: FACET_FUZZ_BUILD_DIR (default build-fuzz), FACET_FUZZ_JOBS
 # (build parallelism, default: all cores), FACET_FUZZ_NO_BUILD=1 (run the
 # targets as built, e.g. while another build of the folder runs), CC/CXX
-# (default clang-14/clang++-14).
+# (default clang-14/clang++-14), FACET_FUZZ_REPLAY_ONLY="t1 t2" (those
+# targets only run their committed corpus once, no mutation: for a target
+# with an open finding, so that a smoke run stays a regression check).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FACET_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -68,6 +70,10 @@ target_args() {
   esac
 }
 
+replay_args() {
+  if [[ " ${FACET_FUZZ_REPLAY_ONLY:-} " == *" $1 "* ]]; then echo "-runs=0"; fi
+}
+
 # Runs one target; prints its summary line; returns 1 on a finding.
 run_target() {
   local name=fuzz_$1
@@ -79,7 +85,7 @@ run_target() {
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
   LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0} \
     "$build/tests/fuzz/$name" "$scratch" "$root/tests/fuzz/corpus/$1" \
-    -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
+    -max_total_time="$seconds" $(replay_args "$1") -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="$findings/" $(target_args "$1") "${extra[@]}" >"$log" 2>&1 || status=$?
   local runs rate final cov corp
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

@@ -48,7 +48,7 @@ size_t read_body(char* buffer, size_t size, size_t count, void* user) {
   return n;
 }
 
-// GET: the body on 200, else nullopt; `too_large` when it was longer than `limit`.
+// GET: the body on 200, else nullopt; `too_large` when a 200's body was longer than `limit`.
 std::optional<std::string> http_get(const std::string& url, long timeout_ms, uint64_t limit, bool& too_large) {
   init_curl_once();
   CURL* curl = curl_easy_init();
@@ -65,7 +65,9 @@ std::optional<std::string> http_get(const std::string& url, long timeout_ms, uin
   long status = 0;
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &status);
   curl_easy_cleanup(curl);
-  too_large = down.too_large || rc == CURLE_FILESIZE_EXCEEDED;
+  // Only a 200's body is a value: a miss's error page (nginx sends 153 bytes
+  // of HTML with its 404) may be longer than a value may be, and is a miss.
+  too_large = status == 200 && (down.too_large || rc == CURLE_FILESIZE_EXCEEDED);
   if (rc != CURLE_OK || status != 200) return std::nullopt;
   return std::move(down.body);
 }
