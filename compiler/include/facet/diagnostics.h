@@ -106,15 +106,55 @@ Diagnostics apply_warning_options(const Diagnostics& diags, const WarningOptions
 // into one with variant_hits/variant_total set. Order of first appearance.
 Diagnostics merge_variant_duplicates(const std::vector<Diagnostics>& per_variant);
 
+// A flood of diagnostics (a pragma naming thousands of undeclared keywords,
+// the same warning from thousands of lines) would bury the one that matters
+// and fill a CI log with megabytes. The printers collapse and cap what they
+// show; the list itself, and so the exit status, keeps every error.
+inline constexpr size_t kMaxShownDiagnostics = 100;  // per render_text / render_json call (facetc: per input)
+inline constexpr size_t kMaxEchoedText = 64;         // characters of input text quoted in a message
+// Diagnostics with the same id and message are shown this many times (a
+// warning at two call sites shows both), the last with "(and N more like it)".
+inline constexpr size_t kMaxRepeats = 3;
+// A run of this many characters without a space in a message is input text
+// echoed back whole (a 100 KB number); the printers shorten it.
+inline constexpr size_t kMaxMessageWord = 256;
+
+// `text` when it has at most `max` characters, else its first `max` and
+// "..."; for quoting input text (a token, a keyword) in a message.
+std::string shorten_echo(std::string_view text, size_t max = kMaxEchoedText);
+
+// What a printer shows of a list.
+struct ShownDiagnostics {
+  // Of the diagnostics with the same id, severity and message the first
+  // kMaxRepeats are shown, the last of them ending "(and N more like it)"
+  // when there were more; then at most
+  // `max_shown` of those, errors first kept, in their original order; words
+  // longer than kMaxMessageWord shortened to kMaxEchoedText.
+  Diagnostics shown;
+  // What `shown` leaves out past `max_shown` ("and N more diagnostics").
+  size_t hidden = 0;
+  size_t hidden_errors = 0;
+  size_t hidden_warnings = 0;
+};
+ShownDiagnostics cap_diagnostics(const Diagnostics& diags, size_t max_shown = kMaxShownDiagnostics);
+
+// "and 812 more diagnostics (3 errors, 809 warnings)", the line printed
+// after a capped list.
+std::string hidden_summary(const ShownDiagnostics& shown);
+
 struct RenderOptions {
   bool color = false;
   bool show_source_line = true;
 };
 
-// "file:line:col: error: message" + source line + caret + notes, like GCC.
+// "file:line:col: error: message" + source line + caret + notes, like GCC;
+// capped as cap_diagnostics says, then "facet: note: and N more diagnostics".
 std::string render_text(const Diagnostics& diags, const SourceMap& sources, const RenderOptions& options = {});
 // A JSON array of objects {id, severity, file, line, column, end_line,
-// end_column, message, notes[], fixits[], group, variants}.
+// end_column, message, notes[], fixits[], group, variants}, capped as
+// render_text is; a capped list ends with {id: "diagnostics_hidden", severity:
+// "note", message: "and N more diagnostics (...)", hidden, hidden_errors,
+// hidden_warnings}.
 std::string render_json(const Diagnostics& diags, const SourceMap& sources);
 
 }  // namespace facet

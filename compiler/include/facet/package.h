@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "facet/diagnostics.h"
@@ -17,7 +18,9 @@
 
 namespace facet::package {
 
-inline constexpr uint32_t kFormatVersion = 2;  // 2: reflections shared between stages (1: inline)
+// 3: the build record (shard i of N, build id); 2: reflections shared
+// between stages (1: inline).
+inline constexpr uint32_t kFormatVersion = 3;
 
 struct PackageStage {
   Stage stage = Stage::vertex;
@@ -39,6 +42,23 @@ struct PackagePass {
   std::vector<PackageVariant> variants;  // sorted by key
 };
 
+// Which part of which build a package is, so that --merge can tell whether
+// its shards make one whole build (docs/package-format.md, "Shards").
+struct BuildRecord {
+  uint32_t shard_index = 0;  // facetc --shard i/N: i
+  uint32_t shard_count = 1;  // N; 1 for a whole (unsharded or merged) build
+  // Identifies the build: facetc hashes the shader file's bytes, the
+  // options that shape the code and the variants the whole build selects
+  // (not --shard, -j or output paths), so shards of one build share it.
+  // 0: unknown (files of format 1 and 2, packages written by library callers).
+  uint64_t build_id = 0;
+  bool operator==(const BuildRecord&) const = default;
+};
+
+// A BuildRecord::build_id for `key` (what identifies the build, spelled out
+// by the caller): XXH64 of its bytes, never 0 (0 means unknown).
+uint64_t build_id_of(std::string_view key);
+
 // Invariant: every PackageStage::blob < spirv_blobs.size().
 struct Package {
   uint32_t version = kFormatVersion;
@@ -48,6 +68,7 @@ struct Package {
   int lod = 0;
   std::string fallback;  // "" when none
   std::string custom_editor;
+  BuildRecord build;
   std::vector<PackagePass> passes;
   std::vector<std::vector<uint32_t>> spirv_blobs;
 };
@@ -75,7 +96,8 @@ Result<Package> read_package(std::span<const uint8_t> bytes, Diagnostics& diags)
 Result<Package> read_package(std::span<const uint8_t> bytes, Diagnostics& diags, const ReadOptions& options);
 
 // Checks the invariants that read_package enforces beyond the byte layout:
-// blob indices in range, variants strictly sorted by key, each key has one
+// blob indices in range, a build record with shard_index < shard_count,
+// variants strictly sorted by key, each key has one
 // choice per keyword set and each choice is in range (or kOffChoice), stages
 // strictly in Stage order, block members nested at most 32 levels, no
 // render-state value with both a literal and a property. Reports each problem
@@ -87,12 +109,15 @@ bool validate_package(const Package& package, Diagnostics& diags);
 void deduplicate_blobs(Package& package);
 
 // Joins packages built as shards of one build (facetc --shard i/N) into the
-// package the unsharded build gives, byte for byte: the shards must come
-// from the same shader with the same passes and keyword spaces; their
-// variants are united by key (a key in two shards must have identical
-// stages) and the SPIR-V stored once in first-use order. Mismatches are
-// package_merge_mismatch errors naming what differs.
-Result<Package> merge_packages(const std::vector<Package>& shards, Diagnostics& diags);
+// package the unsharded build gives, byte for byte: the shards must be
+// exactly shards 0..N-1 of one build (one build id and shard count, each
+// index once), from the same shader with the same passes and keyword
+// spaces; their variants are united by key (a key in two shards must have
+// identical stages) and the SPIR-V stored once in first-use order. A missing,
+// repeated or foreign shard and other mismatches are package_merge_mismatch
+// errors naming the shard (by `names[i]` when given, e.g. file names).
+Result<Package> merge_packages(const std::vector<Package>& shards, Diagnostics& diags,
+                               const std::vector<std::string>& names = {});
 
 // A stable JSON view of the whole package (SPIR-V as word counts + hashes);
 // keys in a fixed order, documented in docs/package-format.md.

@@ -102,7 +102,8 @@ std::string headline(Severity severity, const SourceSpan& span, const std::strin
 
 std::string render_text(const Diagnostics& diags, const SourceMap& sources, const RenderOptions& options) {
   std::string out;
-  for (const Diagnostic& d : diags.all()) {
+  ShownDiagnostics capped = cap_diagnostics(diags);
+  for (const Diagnostic& d : capped.shown.all()) {
     for (auto it = d.include_stack.rbegin(); it != d.include_stack.rend(); ++it) {
       if (!it->has_location()) continue;
       LineColumn lc = sources.line_column(it->file, it->begin);
@@ -122,6 +123,7 @@ std::string render_text(const Diagnostics& diags, const SourceMap& sources, cons
       if (options.show_source_line && note.span.has_location()) out += source_excerpt(note.span, sources, options);
     }
   }
+  if (capped.hidden > 0) out += headline(Severity::note, {}, hidden_summary(capped), sources, options, "");
   return out;
 }
 
@@ -144,7 +146,8 @@ nlohmann::json location_json(const SourceSpan& span, const SourceMap& sources) {
 
 std::string render_json(const Diagnostics& diags, const SourceMap& sources) {
   nlohmann::json list = nlohmann::json::array();
-  for (const Diagnostic& d : diags.all()) {
+  ShownDiagnostics capped = cap_diagnostics(diags);
+  for (const Diagnostic& d : capped.shown.all()) {
     nlohmann::json j = location_json(d.span, sources);
     j["id"] = std::string(diag_name(d.id));
     j["severity"] = std::string(severity_word(d.severity));
@@ -169,6 +172,18 @@ std::string render_json(const Diagnostics& diags, const SourceMap& sources) {
     for (const SourceSpan& s : d.include_stack) includes.push_back(location_json(s, sources));
     j["include_stack"] = std::move(includes);
     list.push_back(std::move(j));
+  }
+  if (capped.hidden > 0) {
+    list.push_back({{"id", "diagnostics_hidden"},
+                    {"severity", "note"},
+                    {"message", hidden_summary(capped)},
+                    {"group", ""},
+                    {"hidden", capped.hidden},
+                    {"hidden_errors", capped.hidden_errors},
+                    {"hidden_warnings", capped.hidden_warnings},
+                    {"notes", nlohmann::json::array()},
+                    {"fixits", nlohmann::json::array()},
+                    {"include_stack", nlohmann::json::array()}});
   }
   return list.dump(2) + "\n";
 }

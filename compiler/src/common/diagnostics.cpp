@@ -5,6 +5,8 @@
 #include <map>
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "facet/result.h"
 
 namespace facet {
@@ -123,6 +125,87 @@ Diagnostics merge_variant_duplicates(const std::vector<Diagnostics>& per_variant
     }
   }
   return out;
+}
+
+std::string shorten_echo(std::string_view text, size_t max) {
+  if (text.size() <= max) return std::string(text);
+  return std::string(text.substr(0, max)) + "...";
+}
+
+namespace {
+
+// `message` with every run of more than kMaxMessageWord non-space
+// characters shortened: input text that a stage quoted whole.
+std::string shorten_long_words(const std::string& message) {
+  std::string out;
+  size_t i = 0;
+  while (i < message.size()) {
+    size_t end = message.find(' ', i);
+    if (end == std::string::npos) end = message.size();
+    std::string_view word = std::string_view(message).substr(i, end - i);
+    out += word.size() > kMaxMessageWord ? shorten_echo(word) : std::string(word);
+    if (end < message.size()) out += ' ';
+    i = end + 1;
+  }
+  return out;
+}
+
+// The first kMaxRepeats of each (id, severity, message), the last of them
+// with how many more there were.
+std::vector<std::pair<Diagnostic, size_t>> collapse_repeats(const Diagnostics& diags) {
+  std::vector<std::pair<Diagnostic, size_t>> out;
+  struct Seen {
+    size_t count = 0;
+    size_t last_shown = 0;  // index into `out`
+  };
+  std::map<std::tuple<DiagId, Severity, std::string_view>, Seen> seen;
+  for (const Diagnostic& d : diags.all()) {
+    Seen& s = seen[std::make_tuple(d.id, d.severity, std::string_view(d.message))];
+    if (s.count++ < kMaxRepeats) {
+      s.last_shown = out.size();
+      out.push_back({d, 0});
+    } else {
+      ++out[s.last_shown].second;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+ShownDiagnostics cap_diagnostics(const Diagnostics& diags, size_t max_shown) {
+  std::vector<std::pair<Diagnostic, size_t>> unique = collapse_repeats(diags);
+  // Errors are kept first, so that a flood of warnings never hides one.
+  std::vector<bool> keep(unique.size(), false);
+  size_t kept = 0;
+  for (bool errors : {true, false}) {
+    for (size_t i = 0; i < unique.size() && kept < max_shown; ++i) {
+      if (!keep[i] && (unique[i].first.severity == Severity::error) == errors) {
+        keep[i] = true;
+        ++kept;
+      }
+    }
+  }
+  ShownDiagnostics out;
+  for (size_t i = 0; i < unique.size(); ++i) {
+    auto& [d, more] = unique[i];
+    if (!keep[i]) {
+      ++out.hidden;
+      out.hidden_errors += d.severity == Severity::error;
+      out.hidden_warnings += d.severity == Severity::warning;
+      continue;
+    }
+    d.message = shorten_long_words(d.message);
+    if (more > 0) d.message += fmt::format(" (and {} more like it)", more);
+    out.shown.push(std::move(d));
+  }
+  return out;
+}
+
+std::string hidden_summary(const ShownDiagnostics& shown) {
+  return fmt::format("and {} more diagnostic{} ({} error{}, {} warning{})", shown.hidden,
+                     shown.hidden == 1 ? "" : "s", shown.hidden_errors, shown.hidden_errors == 1 ? "" : "s",
+                     shown.hidden_warnings, shown.hidden_warnings == 1 ? "" : "s");
 }
 
 }  // namespace facet

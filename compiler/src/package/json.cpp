@@ -263,6 +263,12 @@ Json blob(const std::vector<uint32_t>& words) {
   return Json{{"words", words.size()}, {"xxh64", hex}};
 }
 
+Json build_record(const BuildRecord& b) {
+  char id[17];
+  std::snprintf(id, sizeof id, "%016llx", static_cast<unsigned long long>(b.build_id));
+  return Json{{"shard", b.shard_index}, {"shards", b.shard_count}, {"id", id}};
+}
+
 }  // namespace
 
 std::string package_to_json(const Package& package) {
@@ -277,7 +283,8 @@ std::string package_to_json(const Package& package) {
                            {"lod", package.lod},
                            {"fallback", package.fallback},
                            {"custom_editor", package.custom_editor},
-                           {"tags", tags(package.subshader_tags)}}},
+                           {"tags", tags(package.subshader_tags)},
+                           {"build", build_record(package.build)}}},
            {"properties", std::move(props)},
            {"passes", std::move(passes)},
            {"spirv_blobs", std::move(blobs)}};

@@ -236,12 +236,21 @@ ir::RenderState decode_state(Decoder& d) {
   return s;
 }
 
-void decode_shader(Decoder& d, Package& p) {
+void decode_shader(Decoder& d, Package& p, uint32_t version) {
   p.shader_name = d.str();
   p.subshader_tags = decode_tags(d);
   p.lod = d.i32();
   p.fallback = d.str();
   p.custom_editor = d.str();
+  if (version < 3) return;  // no build record: a whole build of unknown id
+  p.build.shard_index = d.u32();
+  uint64_t count_at = d.offset();
+  p.build.shard_count = d.u32();
+  p.build.build_id = d.u64();
+  if (d.ok() && p.build.shard_index >= p.build.shard_count) {
+    d.fail_at(count_at, "shard " + std::to_string(p.build.shard_index) + " of " +
+                            std::to_string(p.build.shard_count) + " is no shard of its build");
+  }
 }
 
 ir::Property decode_property(Decoder& d) {
@@ -392,7 +401,7 @@ Package decode_sections(std::span<const uint8_t> bytes, const SectionTable& tabl
   ctx.string_budget = codec::string_budget(bytes.size());
 
   Decoder shader = section(bytes, table, SectionId::shader, ctx);
-  decode_shader(shader, p);
+  decode_shader(shader, p, codec::get_u32(bytes, codec::kVersionOffset));
   shader.expect_end("shader");
   Decoder properties = section(bytes, table, SectionId::properties, ctx);
   p.properties = decode_properties(properties);

@@ -110,6 +110,10 @@ bool validate_package(const Package& package, Diagnostics& diags) {
     diags.add(DiagId::package_corrupt, SourceSpan{}, "invalid package: " + where + ": " + what);
     ok = false;
   };
+  if (package.build.shard_index >= package.build.shard_count) {
+    report("build record", "shard " + std::to_string(package.build.shard_index) + " of " +
+                               std::to_string(package.build.shard_count) + " is no shard of its build");
+  }
   for (const PackagePass& pass : package.passes) {
     std::string where = "pass '" + pass.name + "'";
     if (state_has_ambiguous_value(pass.state)) {

@@ -77,6 +77,9 @@ void encode_shader(Encoder& e, const Package& p) {
   e.i32(p.lod);
   e.str(p.fallback);
   e.str(p.custom_editor);
+  e.u32(p.build.shard_index);
+  e.u32(p.build.shard_count);
+  e.u64(p.build.build_id);
 }
 
 void encode_properties(Encoder& e, const std::vector<ir::Property>& props) {
@@ -233,6 +236,11 @@ std::vector<uint8_t> write_package(const Package& package) {
   return assemble({std::move(table.bytes()), std::move(shader.bytes()), std::move(properties.bytes()),
                    std::move(passes.bytes()), std::move(keywords.bytes()), std::move(variants.bytes()),
                    std::move(blobs.bytes())});
+}
+
+uint64_t build_id_of(std::string_view key) {
+  uint64_t id = XXH64(key.data(), key.size(), 0);
+  return id == 0 ? 1 : id;
 }
 
 }  // namespace facet::package

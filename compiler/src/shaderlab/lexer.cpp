@@ -265,7 +265,7 @@ Token Lexer::lex_number(uint32_t start) {
   auto [ptr, ec] = std::from_chars(magnitude.data(), magnitude.data() + magnitude.size(), value);
   if (ec != std::errc() || ptr != magnitude.data() + magnitude.size() || !std::isfinite(value)) {
     reporter_.error(DiagId::parse_bad_number, reporter_.span(start, pos_),
-                    "number '" + std::string(text(t)) + "' is out of range");
+                    "number '" + shorten_echo(text(t)) + "' is out of range");
     value = 0;
   }
   t.number = text_[start] == '-' ? -value : value;

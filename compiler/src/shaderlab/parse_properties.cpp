@@ -3,6 +3,8 @@
 // The parser accepts any word as the type and any default form; whether they
 // fit together ("Flaot", a texture with a number default) is sema's question,
 // so that one misspelt type does not hide the rest of the block.
+#include <cmath>
+
 #include "shaderlab/parser.h"
 
 namespace facet::shaderlab {
@@ -122,9 +124,11 @@ bool Parser::parse_property_type(ast::Property& p) {
 bool Parser::parse_property_default(ast::Property& p) {
   ast::PropertyDefault& d = p.default_value;
   uint32_t begin = current_.begin;
-  if (at(TokenKind::number)) {
+  if (at(TokenKind::number) || at_non_finite_word()) {
     d.kind = ast::PropertyDefault::Kind::number;
-    d.numbers.push_back(take().number);
+    auto n = parse_float("in the default of '" + p.name + "'");
+    if (!n) return false;
+    d.numbers.push_back(*n);
   } else if (at(TokenKind::lparen)) {
     take();
     d.kind = ast::PropertyDefault::Kind::vector;
@@ -150,12 +154,43 @@ bool Parser::parse_property_default(ast::Property& p) {
   return true;
 }
 
+// Property values are 32-bit floats (docs/package-format.md): a number that
+// does not fit one would become an infinity that no one wrote, so it is an
+// error at the number, like a number too large for a double. Infinities and
+// NaN cannot be written at all (the words 'inf' and 'nan').
+std::optional<double> Parser::parse_float(std::string_view context) {
+  if (at_non_finite_word()) {
+    reporter_.error(DiagId::parse_bad_number, span(current_),
+                    "'" + std::string(lexer_.text(current_)) + "' is not a number a property can hold " +
+                        std::string(context) + "; write a finite number");
+    return std::nullopt;
+  }
+  auto n = expect(TokenKind::number, "a number", context);
+  if (!n) return std::nullopt;
+  // Doubles from here up round to infinity as floats (half an ulp past FLT_MAX).
+  constexpr double kFloatOverflow = 0x1.ffffffp+127;
+  if (!(std::abs(n->number) < kFloatOverflow)) {
+    reporter_.error(DiagId::parse_bad_number, span(*n),
+                    "number '" + shorten_echo(lexer_.text(*n)) + "' does not fit a 32-bit float " +
+                        std::string(context) + " (the largest is about 3.4e38)");
+    return std::nullopt;
+  }
+  return n->number;
+}
+
+bool Parser::at_non_finite_word() const {
+  if (current_.kind != TokenKind::word) return false;
+  std::string_view w = lexer_.text(current_);
+  if (!w.empty() && (w[0] == '-' || w[0] == '+')) w.remove_prefix(1);
+  return iequals(w, "nan") || iequals(w, "inf") || iequals(w, "infinity");
+}
+
 bool Parser::parse_number_list(std::vector<double>& out, std::string_view context) {
   if (at(TokenKind::rparen)) return true;
   for (;;) {
-    auto n = expect(TokenKind::number, "a number", context);
+    auto n = parse_float(context);
     if (!n) return false;
-    out.push_back(n->number);
+    out.push_back(*n);
     if (!at(TokenKind::comma)) return true;
     take();
   }

@@ -95,6 +95,8 @@ class Parser {
   bool parse_property_type(ast::Property& p);
   bool parse_property_default(ast::Property& p);
   bool parse_number_list(std::vector<double>& out, std::string_view context);
+  std::optional<double> parse_float(std::string_view context);
+  bool at_non_finite_word() const;
 
   FileId file_;
   const SourceMap& sources_;

@@ -41,11 +41,22 @@ struct Produced {
 
 bool is_package_file(const std::string& path) { return fs::path(path).extension() == ".facetpkg"; }
 
-std::string package_output_path(const FacetcArgs& args, const std::string& input) {
-  if (!args.output.empty()) return args.output;
+// <input stem>.facetpkg, in --out-dir if given: where a package goes without -o.
+std::string default_package_path(const FacetcArgs& args, const std::string& input) {
   fs::path name = fs::path(input).stem();
   name += ".facetpkg";
   return (args.out_dir.empty() ? name : fs::path(args.out_dir) / name).string();
+}
+
+std::string package_output_path(const FacetcArgs& args, const std::string& input) {
+  return !args.output.empty() ? args.output : default_package_path(args, input);
+}
+
+// Where -M writes its rule: -MF, else -o (as gcc -M -o does), else ""
+// (standard output).
+std::string rule_destination(const FacetcArgs& args) {
+  if (!args.depfile.empty()) return args.depfile;
+  return args.output == "-" ? "" : args.output;
 }
 
 std::string pass_header(const ir::Pass& pass, size_t index) {
@@ -74,6 +85,48 @@ Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compi
   return out;
 }
 
+// What identifies a build for --merge (docs/package-format.md, "Shards"):
+// the shader file's bytes, the options that shape the compiled code, and
+// the variants the whole build selects (so every option that changes the
+// selection, --keywords, --strip or --materials among them, counts by what
+// it selects). Not --shard (the shards of a build and the unsharded build
+// share it), -j, the cache or output paths, which change none of the
+// package's bytes.
+uint64_t build_id(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader, CompileOptions options,
+                  const std::string& input, const SourceMap& sources) {
+  std::string key = "facetc build\n";
+  auto field = [&](std::string_view name, std::string_view value) {
+    key += fmt::format("{} {}\n", name, value.size());
+    key += value;
+  };
+  for (FileId id = 0; id < sources.file_count(); ++id) {
+    if (sources.path(id) == input) {
+      field("shader", sources.text(id));
+      break;
+    }
+  }
+  for (size_t i = 0; i < args.compile_flags.size(); ++i) {
+    const std::string& flag = args.compile_flags[i];
+    if (flag == "--cache-dir" || flag == "--remote-cache") {
+      ++i;  // and its value
+      continue;
+    }
+    field("flag", flag);
+  }
+  options.shard_index = 0;
+  options.shard_count = 1;
+  Diagnostics ignored;  // the compile that succeeded reported them
+  auto passes = compiler.select_passes(shader, options, ignored);
+  for (const SelectedPass& pass : passes ? *passes : std::vector<SelectedPass>{}) {
+    field("pass", fmt::format("{}.{}", pass.subshader, pass.pass));
+    auto keys = compiler.select_variants(pass, options, ignored);
+    for (const variants::VariantKey& k : keys ? *keys : std::vector<variants::VariantKey>{}) {
+      field("variant", fmt::format("{}", fmt::join(k.choice, ",")));
+    }
+  }
+  return package::build_id_of(key);
+}
+
 Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
                                const ir::Shader& shader, const std::string& input, SourceMap& sources,
                                Diagnostics& diags) {
@@ -84,6 +137,9 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   auto compiled = compiler.compile(shader, options, sources, diags);
   bar.finish();
   FACET_TRY(compiled);
+  compiled->package.build = {.shard_index = args.shard_index,
+                             .shard_count = args.shard_count,
+                             .build_id = build_id(args, compiler, shader, options, input, sources)};
   auto encode_started = std::chrono::steady_clock::now();
   std::vector<uint8_t> bytes = package::write_package(compiled->package);
   double encode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - encode_started).count();
@@ -126,15 +182,19 @@ Result<package::Package> read_package_file(const std::string& input, Diagnostics
   return pkg;
 }
 
-Result<Produced> dump_package_file(const std::string& input, Diagnostics& diags) {
+Result<Produced> dump_package_file(const FacetcArgs& args, const std::string& input, Diagnostics& diags) {
   auto pkg = read_package_file(input, diags);
   FACET_TRY(pkg);
-  return Produced{.bytes = package::package_to_json(*pkg)};
+  return Produced{.bytes = package::package_to_json(*pkg), .output = args.output};
 }
 
 Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
                          const std::string& input, SourceMap& sources, Diagnostics& diags) {
-  if (args.mode == Mode::dump && is_package_file(input)) return dump_package_file(input, diags);
+  if (args.mode == Mode::dump && is_package_file(input)) return dump_package_file(args, input, diags);
+  if (args.mode == Mode::depfile_only && !args.depfile.empty() && !args.output.empty()) {
+    diags.add(DiagId::driver_bad_option, {}, "-M writes its rule to the file -o or -MF names; give one of them");
+    return Produced{.usage_error = true};
+  }
   if (args.mode == Mode::dump && args.dump == DumpKind::ast) {
     auto text = read_file(input, kMaxShaderBytes, diags);
     FACET_TRY(text);
@@ -238,7 +298,7 @@ std::vector<RunInput> run_inputs(const FacetcArgs& args, const std::string& inpu
 
 // Every file write_outputs would write (standard output is none).
 std::vector<std::string> output_paths(const FacetcArgs& args, const Produced& produced) {
-  if (args.mode == Mode::depfile_only) return {args.depfile};
+  if (args.mode == Mode::depfile_only) return {rule_destination(args)};
   std::vector<std::string> out{to_stdout(produced.output) ? "" : produced.output};
   if (args.write_depfile) out.push_back(!args.depfile.empty() ? args.depfile : produced.output + ".d");
   return out;
@@ -257,15 +317,19 @@ bool write_outputs(const FacetcArgs& args, const std::string& input, const Produ
   std::vector<RunInput> inputs = run_inputs(args, input, read, read_before);
   read_before.insert(read_before.end(), read.begin(), read.end());
   if (!outputs_spare_inputs(output_paths(args, produced), inputs, diags)) return false;
-  std::string target = !args.dep_target.empty() ? args.dep_target
-                       : to_stdout(produced.output) ? package_output_path(args, input) : produced.output;
+  // -M's -o names the rule's file, not the package it describes.
+  std::string target = !args.dep_target.empty()          ? args.dep_target
+                       : args.mode == Mode::depfile_only ? default_package_path(args, input)
+                       : to_stdout(produced.output)      ? package_output_path(args, input)
+                                                         : produced.output;
   std::string rule = make_rule(target, read);
   if (args.mode == Mode::depfile_only) {
-    if (args.depfile.empty()) {
+    std::string destination = rule_destination(args);
+    if (destination.empty()) {
       console.out << rule;
       return true;
     }
-    return bool(write_file_atomically(args.depfile, rule, diags));
+    return bool(write_file_atomically(destination, rule, diags));
   }
   std::string_view contents = produced.package.empty()
                                   ? std::string_view(produced.bytes)
@@ -338,7 +402,7 @@ int run_merge(const FacetcArgs& args, Console& console, nlohmann::json& json_dia
   Diagnostics diags;
   std::vector<RunInput> inputs;
   add_inputs(inputs, args.inputs, "a package being merged");
-  auto merged = package::merge_packages(shards, diags);
+  auto merged = package::merge_packages(shards, diags, args.inputs);
   bool ok = merged && outputs_spare_inputs({args.output}, inputs, diags) && write_file_atomically(args.output, [&] {
     std::vector<uint8_t> bytes = package::write_package(*merged);
     return std::string(bytes.begin(), bytes.end());

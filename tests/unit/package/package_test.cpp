@@ -637,13 +637,18 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   p.passes[0].variants = {{{{1}}, {"_ON"}, {{Stage::fragment, 0, {}}}}};
   p.spirv_blobs = {{}};
   const char* expected = R"({
-  "format_version": 2,
+  "format_version": 3,
   "shader": {
     "name": "S",
     "lod": 0,
     "fallback": "",
     "custom_editor": "",
-    "tags": []
+    "tags": [],
+    "build": {
+      "shard": 0,
+      "shards": 1,
+      "id": "0000000000000000"
+    }
   },
   "properties": [
     {
