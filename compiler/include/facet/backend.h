@@ -47,6 +47,19 @@ using IncludeResolver =
 // The Unity version facet's stdlib follows: Unity 2019.4.
 inline constexpr int kDefaultUnityVersion = 201940;
 
+// What one program's compile may take (docs/cli.md, "Input limits"); a
+// compile that would exceed one ends in a located error. 0: no limit.
+struct InputLimits {
+  uint64_t max_includes = 4096;                       // #include directives followed, per program (--max-includes)
+  uint64_t max_include_bytes = uint64_t(64) << 20;    // their bytes together, per program (--max-include-bytes)
+  uint64_t max_preprocessed_bytes = uint64_t(64) << 20;  // the text after macro expansion (--max-preprocessed-bytes)
+  uint64_t max_unroll = 4096;   // iterations of one [unroll] loop (--max-unroll)
+  uint32_t time_limit_s = 60;   // wall time of one stage's compile; then the process ends, exit 1 (--time-limit)
+};
+
+// Any one included file: as for .shader files, 64 MiB (not an option).
+inline constexpr uint64_t kMaxIncludeFileBytes = uint64_t(64) << 20;
+
 struct BackendOptions {
   OptLevel opt = OptLevel::performance;
   TargetEnv target = TargetEnv::vulkan1_1;
@@ -58,6 +71,7 @@ struct BackendOptions {
   int unity_version = kDefaultUnityVersion;
   // When set, used instead of the file system (in-memory compiles).
   IncludeResolver resolver;
+  InputLimits limits;
 };
 
 struct CompiledStage {

@@ -22,6 +22,7 @@
 #include "backend/source_assembly.h"
 #include "backend/spirv_fixup.h"
 #include "backend/spirv_tools.h"
+#include "backend/worker.h"
 
 namespace facet::backend {
 namespace {
@@ -67,20 +68,50 @@ void report_overlaps(const FixupReport& report, const ir::Program& program, Stag
                         list, stage_name(stage)));
 }
 
-// Refuses chunks whose brackets nest deeper than glslang can parse safely.
-bool check_nesting(const ir::Program& program, Diagnostics& diags) {
+// Where the program asks for unrolling: its first "unroll" ([unroll],
+// UNITY_UNROLL), else its body.
+SourceSpan unroll_span(const ir::Program& program) {
   std::vector<const ir::SourceChunk*> chunks;
   for (const ir::SourceChunk& chunk : program.includes) chunks.push_back(&chunk);
   chunks.push_back(&program.body);
   for (const ir::SourceChunk* chunk : chunks) {
-    if (auto at = find_excessive_nesting(chunk->text)) {
-      SourceSpan span = chunk->span;
-      if (span.has_location()) span = {span.file, span.begin + uint32_t(*at), span.begin + uint32_t(*at) + 1};
-      diags.add(DiagId::backend_nesting_too_deep, span, fmt::format("brackets nest more than {} deep", kMaxNesting));
-      return false;
-    }
+    std::string lower = chunk->text;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    size_t at = lower.find("unroll");
+    if (at == std::string::npos || !chunk->span.has_location()) continue;
+    return {chunk->span.file, chunk->span.begin + uint32_t(at), chunk->span.begin + uint32_t(at + 6)};
   }
-  return true;
+  return program.body.span;
+}
+
+// Refuses a loop marked for unrolling that runs more than the limit's
+// iterations: the unroller would copy its body that many times.
+bool check_unroll(const std::vector<uint32_t>& spirv, const ir::Program& program, const BackendOptions& options,
+                  Diagnostics& diags) {
+  uint64_t max = options.limits.max_unroll;
+  if (max == 0) return true;
+  uint64_t trips = longest_unrolled_loop(spirv, options.target);
+  if (trips <= max) return true;
+  diags.add(DiagId::backend_input_limit, unroll_span(program),
+            fmt::format("a loop marked [unroll] runs {} times, more than the limit of {} (--max-unroll)", trips, max))
+      .note({}, "remove [unroll] (or use [loop]) for long loops");
+  return false;
+}
+
+// The error the time limit ends the process with, located at the program.
+// Made before the work starts: when it is printed, the worker may be
+// changing the SourceMap.
+std::string time_limit_message(const ir::Program& program, Stage stage, const BackendOptions& options,
+                               const SourceMap& sources) {
+  std::string where = "facet";
+  const SourceSpan& span = program.body.span;
+  if (span.has_location() && span.file < sources.file_count()) {
+    LineColumn at = sources.line_column(span.file, span.begin);
+    where = fmt::format("{}:{}:{}", sources.path(span.file), at.line, at.column);
+  }
+  return fmt::format("{}: error: compiling the {} stage took longer than {} s (--time-limit); facet stopped, "
+                     "nothing was written\n",
+                     where, stage_name(stage), options.limits.time_limit_s);
 }
 
 std::vector<std::string> included_paths(const FileIncluder& includer) {
@@ -111,21 +142,48 @@ Backend::Backend() { glslang::InitializeProcess(); }
 
 Backend::~Backend() { glslang::FinalizeProcess(); }
 
+namespace {
+
+Result<std::string> preprocess_source(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                                      const std::vector<std::string>& keywords, const BackendOptions& options,
+                                      SourceMap& sources, Diagnostics& diags,
+                                      std::vector<std::string>* included_files) {
+  AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
+  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib_dir(options), diags);
+  if (!includer) return failure("input limit");
+  GlslangOutput out = preprocess_glslang(source, program.language, stage, options, *includer);
+  add_included_files(*includer, sources);
+  if (included_files) *included_files = included_paths(*includer);
+  LogContext context{program, stage, shader.file, source, *includer, sources,
+                     is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
+  report_logs(out, context, diags);
+  if (!out.ok) return failure("preprocessing failed");
+  uint64_t max = options.limits.max_preprocessed_bytes;
+  if (max != 0 && out.preprocessed.size() > max) {
+    diags.add(DiagId::backend_input_limit, program.body.span,
+              fmt::format("the preprocessed program has {} bytes, more than the limit of {} "
+                          "(--max-preprocessed-bytes)",
+                          out.preprocessed.size(), max));
+    return failure("input limit");
+  }
+  return out.preprocessed;
+}
+
+}  // namespace
+
 Result<std::string> Backend::source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                          const std::vector<std::string>& keywords, const BackendOptions& options,
                                          bool preprocess, SourceMap& sources, Diagnostics& diags,
                                          std::vector<std::string>* included_files) const {
-  AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
-  if (!preprocess) return source.text;
-  FileIncluder includer(options, stdlib_dir(options));
-  GlslangOutput out = preprocess_glslang(source, program.language, stage, options, includer);
-  add_included_files(includer, sources);
-  if (included_files) *included_files = included_paths(includer);
-  LogContext context{program, stage, shader.file, source, includer, sources,
-                     is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
-  report_logs(out, context, diags);
-  if (!out.ok) return failure("preprocessing failed");
-  return out.preprocessed;
+  if (!preprocess) {
+    return assemble_source(program, stage, keywords, options, shader_path(shader, sources)).text;
+  }
+  std::string timeout = time_limit_message(program, stage, options, sources);
+  std::optional<Result<std::string>> result;
+  run_on_worker([&] { result = preprocess_source(shader, program, stage, keywords, options, sources, diags,
+                                                 included_files); },
+                options.limits.time_limit_s, [&] { return timeout; });
+  return std::move(*result);
 }
 
 namespace {
@@ -209,17 +267,16 @@ bool fixed_errors(const std::vector<LogMessage>& before, const std::vector<LogMe
   return true;
 }
 
-}  // namespace
-
-Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
-                                       const std::vector<std::string>& keywords, const BackendOptions& options,
-                                       SourceMap& sources, Diagnostics& diags) const {
+// Backend::compile, on the worker thread.
+Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                                    const std::vector<std::string>& keywords, const BackendOptions& options,
+                                    SourceMap& sources, Diagnostics& diags) {
   Result<std::string> entry = entry_point(program, stage, diags);
   if (!entry) return unexpected(entry.error());
-  if (!check_nesting(program, diags)) return failure("nesting too deep");
   size_t errors_before = diags.error_count();
   AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
-  auto includer = std::make_unique<FileIncluder>(options, stdlib_dir(options));
+  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib_dir(options), diags);
+  if (!includer) return failure("input limit");
   GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, *includer);
   // fxc truncates a wider vector argument (X3206) where glslang finds no
   // overload: retry with the arguments cast, and warn at each call.
@@ -246,7 +303,9 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
     std::vector<std::string> all_assigned = assigned;
     all_assigned.insert(all_assigned.end(), more_assigned.begin(), more_assigned.end());
     AssembledSource retry_source = assemble_source(retry, stage, keywords, options, shader_path(shader, sources));
-    auto retry_includer = std::make_unique<FileIncluder>(options, stdlib_dir(options));
+    Diagnostics refused;  // the program's text passed these checks before its rewrites
+    std::unique_ptr<FileIncluder> retry_includer = checked_includer(retry, retry_source, options, stdlib_dir(options), refused);
+    if (!retry_includer) break;
     retry_includer->set_assigned_uniforms(all_assigned);
     retry_includer->set_overrides(retry_overrides);
     GlslangOutput retry_out = run_glslang(retry_source, retry.language, stage, *entry, options, *retry_includer);
@@ -289,6 +348,7 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
   result.included_files = included_paths(*includer);
   if (!check_generated(result.spirv, is_hlsl(program), options.target, diags)) return failure("glslang bug");
   report_overlaps(fix_up_spirv(result.spirv, out.declared, stage, is_hlsl(program)), program, stage, diags);
+  if (!check_unroll(result.spirv, program, options, diags)) return failure("input limit");
   if (is_hlsl(program) && !legalize_hlsl(result.spirv, options.target, diags)) return failure("legalization failed");
   if (!optimize(result.spirv, options.opt, options.target, diags)) return failure("spirv-opt failed");
   Result<StageReflection> reflection =
@@ -299,6 +359,18 @@ Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Progr
   if (is_hlsl(program) && !strip_reflection_info(result.spirv, options.target, diags)) return failure("strip failed");
   if (!validate(result.spirv, options.target, diags)) return failure("invalid SPIR-V");
   return result;
+}
+
+}  // namespace
+
+Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
+                                       const std::vector<std::string>& keywords, const BackendOptions& options,
+                                       SourceMap& sources, Diagnostics& diags) const {
+  std::string timeout = time_limit_message(program, stage, options, sources);
+  std::optional<Result<CompiledStage>> result;
+  run_on_worker([&] { result = compile_stage(shader, program, stage, keywords, options, sources, diags); },
+                options.limits.time_limit_s, [&] { return timeout; });
+  return std::move(*result);
 }
 
 }  // namespace facet::backend

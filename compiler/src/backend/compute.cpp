@@ -9,12 +9,14 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <algorithm>
 #include <memory>
 #include <string_view>
 
 #include "backend/info_log.h"
 #include "backend/source_assembly.h"
 #include "backend/spirv_tools.h"
+#include "backend/worker.h"
 #include "facet/backend.h"
 
 namespace facet::backend {
@@ -73,6 +75,10 @@ void report_log(std::string_view log, const std::string& source, const FileInclu
   }
 }
 
+uint32_t line_number(std::string_view text, size_t offset) {
+  return 1 + uint32_t(std::count(text.begin(), text.begin() + std::min(offset, text.size()), '\n'));
+}
+
 // Parse, link and generate SPIR-V; the logs go to `diags`. Empty on failure.
 std::vector<uint32_t> run_glslang_compute(const std::string& source, const std::string& entry,
                                           const BackendOptions& options, FileIncluder& includer, Diagnostics& diags) {
@@ -112,15 +118,24 @@ Result<std::vector<uint32_t>> compile_hlsl_compute(const std::string& source, co
     diags.add(DiagId::backend_compile_error, SourceSpan{}, "compute shaders are compiled for Vulkan targets only");
     return failure("compute needs a Vulkan target");
   }
-  if (auto at = find_excessive_nesting(source)) {
+  if (auto hazard = find_recursion_hazard(source)) {
     diags.add(DiagId::backend_nesting_too_deep, SourceSpan{},
-              fmt::format("brackets nest more than {} deep (at offset {})", kMaxNesting, *at));
+              fmt::format("{}:{}: {}", kComputeName, line_number(source, hazard->offset), hazard->message));
     return failure("nesting too deep");
   }
   Backend process;  // glslang's process initialisation, reference-counted
   size_t errors_before = diags.error_count();
   FileIncluder includer(options, options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir);
-  std::vector<uint32_t> spirv = run_glslang_compute(source, entry, options, includer, diags);
+  if (auto excess = includer.macro_budget().add_text(source)) {
+    diags.add(DiagId::backend_input_limit, SourceSpan{},
+              fmt::format("{}:{}: {}", kComputeName, line_number(source, excess->offset), excess->message));
+    return failure("input limit");
+  }
+  std::vector<uint32_t> spirv;
+  std::string timeout = fmt::format("{}: error: compiling the compute shader took longer than {} s (--time-limit)\n",
+                                    kComputeName, options.limits.time_limit_s);
+  run_on_worker([&] { spirv = run_glslang_compute(source, entry, options, includer, diags); },
+                options.limits.time_limit_s, [&] { return timeout; });
   if (spirv.empty()) {
     if (diags.error_count() == errors_before) {
       diags.add(DiagId::backend_compile_error, SourceSpan{}, "glslang could not compile the compute shader and gave no reason");
@@ -128,6 +143,13 @@ Result<std::vector<uint32_t>> compile_hlsl_compute(const std::string& source, co
     return failure("compute shader did not compile");
   }
   if (!check_generated(spirv, true, options.target, diags)) return failure("glslang bug");
+  if (uint64_t trips = longest_unrolled_loop(spirv, options.target);
+      options.limits.max_unroll != 0 && trips > options.limits.max_unroll) {
+    diags.add(DiagId::backend_input_limit, SourceSpan{},
+              fmt::format("{}: a loop marked [unroll] runs {} times, more than the limit of {} (--max-unroll)",
+                          kComputeName, trips, options.limits.max_unroll));
+    return failure("input limit");
+  }
   if (!legalize_hlsl(spirv, options.target, diags)) return failure("legalization failed");
   if (!optimize(spirv, options.opt, options.target, diags)) return failure("spirv-opt failed");
   if (!validate(spirv, options.target, diags)) return failure("invalid SPIR-V");

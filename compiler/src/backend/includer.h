@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "backend/macro_budget.h"
+#include "backend/source_assembly.h"
 #include "facet/backend.h"
 
 namespace facet::backend {
@@ -33,6 +35,23 @@ struct IncludeRecord {
   bool system = false;    // <x> rather than "x"
 };
 
+// Why an #include was refused although the file exists: glslang only says
+// it "could not process" it, so the includer keeps the reason.
+struct IncludeRefusal {
+  std::string header;  // as requested
+  DiagId id = DiagId::backend_include_not_found;
+  std::string message;
+  std::string note;
+  // When the reason lies inside the file (a hazard, a macro bomb): the
+  // file, its text and the offset there. Otherwise the #include is blamed.
+  std::string path;
+  std::string text;
+  size_t offset = 0;
+  // A budget of the whole program (count, bytes): later includes are
+  // refused for it too, and only the first is reported.
+  bool budget = false;
+};
+
 class FileIncluder final : public glslang::TShader::Includer {
  public:
   FileIncluder(const BackendOptions& options, std::string stdlib_dir);
@@ -45,10 +64,13 @@ class FileIncluder final : public glslang::TShader::Includer {
   const std::vector<IncludeRecord>& records() const { return records_; }
   // The text of a file this includer returned (nullptr if never returned).
   const std::string* text_of(const std::string& path) const;
-  // Whether `header` was refused because includes nested too deeply.
-  bool too_deep(const std::string& header) const;
-  // Whether `header` was refused because its brackets nest too deeply.
-  bool too_nested(const std::string& header) const;
+  // Why `header` was refused, when the file was found but refused (too
+  // deep, a budget exceeded, text glslang cannot take); nullptr otherwise.
+  const IncludeRefusal* refusal(const std::string& header) const;
+  // The macro-expansion estimate of the program (macro_budget.h): the
+  // program's own chunks go in before glslang runs, included files as
+  // they are returned.
+  MacroBudget& macro_budget() { return macro_budget_; }
   // Global uniforms the program assigns to: their declarations in included
   // files are rewritten (rewrite_assigned_uniforms).
   void set_assigned_uniforms(std::vector<std::string> names) { assigned_uniforms_ = std::move(names); }
@@ -63,18 +85,32 @@ class FileIncluder final : public glslang::TShader::Includer {
 
  private:
   IncludeResult* found(std::string path, std::string text, const char* header, const char* includer, bool system);
+  IncludeResult* refuse(IncludeRefusal refusal);
+  // A budget refusal already given, or one `size` more bytes would cause.
+  std::optional<IncludeRefusal> over_budget(const char* header, uint64_t size) const;
+  std::optional<IncludeRefusal> check_text(const std::string& path, const std::string& text, const char* header);
   IncludeResult* search(const std::vector<std::string>& dirs, const char* header, const char* includer, bool system);
 
   const BackendOptions& options_;
   std::string stdlib_dir_;
   std::vector<IncludeRecord> records_;
-  std::vector<std::string> too_deep_, too_nested_;
+  std::vector<IncludeRefusal> refusals_;
+  MacroBudget macro_budget_;
+  uint64_t include_count_ = 0, include_bytes_ = 0;
   std::vector<std::string> assigned_uniforms_;
   std::map<std::string, std::string> overrides_;
   std::deque<std::pair<std::string, std::string>> texts_;  // path, text; stable addresses
 };
 
-// Reads a whole file; nullopt when it cannot be read.
+// An includer for one compile of `program`, its macro budget fed the
+// program's prelude and chunks; nullptr, with a located error, when that
+// text would overflow glslang's stack (find_recursion_hazard) or expands
+// past the budget (MacroBudget).
+std::unique_ptr<FileIncluder> checked_includer(const ir::Program& program, const AssembledSource& source,
+                                               const BackendOptions& options, const std::string& stdlib_dir,
+                                               Diagnostics& diags);
+
+// Reads a whole file; nullopt when it cannot be read (or is not a regular file).
 std::optional<std::string> read_text_file(const std::string& path);
 
 }  // namespace facet::backend

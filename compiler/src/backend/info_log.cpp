@@ -59,8 +59,16 @@ struct Located {
 };
 
 // "FILE:LINE: TEXT", FILE being the shortest prefix that makes it match.
+// A line glslang's int counter wrapped ("FILE:-2: ") or one of nine digits
+// and more is no position: the message keeps its text, without a location.
 std::optional<Located> match_located(std::string_view s) {
   for (size_t colon = s.find(':'); colon != std::string_view::npos; colon = s.find(':', colon + 1)) {
+    if (colon + 1 < s.size() && s[colon + 1] == '-') {
+      size_t wrapped = digits_at(s, colon + 2);
+      if (wrapped > 0 && s.substr(colon + 2 + wrapped).starts_with(": ")) {
+        return Located{"", 0, 0, std::string(s.substr(colon + 2 + wrapped + 2))};
+      }
+    }
     size_t n = digits_at(s, colon + 1);
     if (n == 0 || n >= 9) continue;
     size_t end = colon + 1 + n;
@@ -186,25 +194,32 @@ class LogMapper {
         span.end += 1;
       }
     }
-    if (ctx_.includer.too_nested(header)) {
-      Diagnostic& d = diags_.add(DiagId::backend_nesting_too_deep, span,
-                                 fmt::format("'{}' nests brackets more than {} deep", header, kMaxNesting));
-      d.include_stack = include_stack(m.file);
-      return;
-    }
-    if (ctx_.includer.too_deep(header)) {
-      Diagnostic& d = diags_.add(DiagId::backend_include_not_found, span,
-                                 fmt::format("#include nested more than {} deep", kMaxIncludeDepth));
-      d.note({}, fmt::format("does '{}' include itself without an include guard?", header));
-      d.include_stack = include_stack(m.file);
-      return;
-    }
+    if (const IncludeRefusal* refusal = ctx_.includer.refusal(header)) return report_refusal(*refusal, span, m.file);
     Diagnostic& d = diags_.add(DiagId::backend_include_not_found, span, fmt::format("include file '{}' not found", header));
     std::vector<std::string> dirs = ctx_.includer.search_dirs(m.file);
     std::string list;
     for (const std::string& dir : dirs) list += (list.empty() ? "" : ", ") + fmt::format("'{}'", dir);
     d.note({}, list.empty() ? std::string("no include directories to search") : "searched " + list);
     d.include_stack = include_stack(m.file);
+  }
+
+  // An include that was found but refused: at the reason inside the file
+  // when there is one (included from the #include), else at the #include.
+  // A program-wide budget is reported once.
+  void report_refusal(const IncludeRefusal& refusal, SourceSpan directive, const std::string& includer) {
+    if (refusal.budget && budget_reported_) return;
+    budget_reported_ |= refusal.budget;
+    std::vector<SourceSpan> stack = include_stack(includer);
+    SourceSpan span = directive;
+    if (!refusal.path.empty()) {
+      FileId file = ctx_.sources.add_file_once(refusal.path, refusal.text);
+      uint32_t at = uint32_t(std::min(refusal.offset, refusal.text.size()));
+      span = {file, at, at + (at < refusal.text.size() ? 1u : 0u)};
+      stack.insert(stack.begin(), directive);
+    }
+    Diagnostic& d = diags_.add(refusal.id, span, refusal.message);
+    if (!refusal.note.empty()) d.note({}, refusal.note);
+    d.include_stack = std::move(stack);
   }
 
   void report_missing_entry() {
@@ -270,6 +285,7 @@ class LogMapper {
   Diagnostics& diags_;
   FileId prelude_ = kNoFile;
   bool entry_reported_ = false;
+  bool budget_reported_ = false;
 };
 
 }  // namespace

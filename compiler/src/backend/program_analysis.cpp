@@ -6,7 +6,10 @@
 #include <memory>
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <optional>
 #include <cctype>
 #include <set>
 
@@ -15,6 +18,7 @@
 #include "backend/includer.h"
 #include "backend/info_log.h"
 #include "backend/source_assembly.h"
+#include "backend/worker.h"
 
 namespace facet::backend {
 namespace {
@@ -204,9 +208,12 @@ const std::vector<AnalyzedField>* ProgramAnalysis::find_struct(std::string_view 
   return it == structs.end() ? nullptr : &it->second;
 }
 
-Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
-                                        const std::vector<std::string>& keywords, const BackendOptions& options,
-                                        SourceMap& sources, Diagnostics& diags) {
+namespace {
+
+// analyze_program, on the worker thread.
+Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& program,
+                                const std::vector<std::string>& keywords, const BackendOptions& options,
+                                SourceMap& sources, Diagnostics& diags) {
   std::string path = shader.file != kNoFile && shader.file < sources.file_count() ? sources.path(shader.file) : "";
   std::string stdlib = options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir;
   ProgramAnalysis analysis;
@@ -221,7 +228,9 @@ Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Prog
                          });
   };
   AssembledSource source;
-  auto includer = std::make_unique<FileIncluder>(options, stdlib);
+  source = assemble_source(program, Stage::fragment, keywords, options, path);
+  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib, diags);
+  if (!includer) return failure("input limit");
   GlslangOutput out = parse(program, source, *includer);
   // Calls fxc accepts by truncating a wider vector argument: analysed with
   // the arguments cast, as Backend::compile compiles them (and warns there).
@@ -229,7 +238,9 @@ Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Prog
     ir::Program cast = program;
     if (!cast_rejected_calls(cast, source.root_name, parse_info_log(out.parse_log)).empty()) {
       AssembledSource cast_source;
-      auto cast_includer = std::make_unique<FileIncluder>(options, stdlib);
+      Diagnostics refused;  // the program's text passed these checks before its casts
+      std::unique_ptr<FileIncluder> cast_includer = checked_includer(cast, cast_source, options, stdlib, refused);
+      if (!cast_includer) return failure("input limit");
       GlslangOutput cast_out = parse(cast, cast_source, *cast_includer);
       if (cast_out.ok) {
         source = std::move(cast_source);
@@ -245,6 +256,19 @@ Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Prog
   report_info_log(out.parse_log, context, diags);
   if (!out.ok) return failure("the program does not parse");
   return analysis;
+}
+
+}  // namespace
+
+Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
+                                        const std::vector<std::string>& keywords, const BackendOptions& options,
+                                        SourceMap& sources, Diagnostics& diags) {
+  std::optional<Result<ProgramAnalysis>> result;
+  std::string timeout = fmt::format("facet: error: analysing a program took longer than {} s (--time-limit)\n",
+                                    options.limits.time_limit_s);
+  run_on_worker([&] { result = analyze(shader, program, keywords, options, sources, diags); },
+                options.limits.time_limit_s, [&] { return timeout; });
+  return std::move(*result);
 }
 
 }  // namespace facet::backend

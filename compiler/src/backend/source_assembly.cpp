@@ -426,6 +426,181 @@ std::optional<size_t> find_excessive_nesting(std::string_view text, int limit) {
   return std::nullopt;
 }
 
+namespace {
+
+bool is_unary_char(char c) { return c == '!' || c == '~' || c == '-' || c == '+'; }
+
+// An '=' at `i` that assigns: not ==, !=, <=, >= (but <<= and >>= do).
+bool is_assignment(std::string_view text, size_t i) {
+  if (i + 1 < text.size() && text[i + 1] == '=') return false;
+  if (i == 0) return true;
+  char before = text[i - 1];
+  if (before == '=' || before == '!') return false;
+  if (before == '<' || before == '>') return i >= 2 && text[i - 2] == before;
+  return true;
+}
+
+// The hazard scan's state: one pass over the text, counting each kind of
+// run since it last broke.
+class HazardScan {
+ public:
+  explicit HazardScan(std::string_view text) : text_(text) {}
+
+  std::optional<RecursionHazard> run() {
+    bool line_start = true;
+    for (size_t i = 0; i < text_.size() && !found_; ++i) {
+      char c = text_[i];
+      char next = i + 1 < text_.size() ? text_[i + 1] : '\0';
+      if (c == '\n') {
+        if (directive_ && !(i > 0 && text_[i - 1] == '\\')) end_directive();
+        line_start = true;
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\\') continue;
+      if (c == '/' && next == '/') {
+        i = std::min(text_.find('\n', i), text_.size()) - 1;
+        continue;
+      }
+      if (c == '/' && next == '*') {
+        size_t end = text_.find("*/", i + 2);
+        i = end == std::string_view::npos ? text_.size() : end + 1;
+        continue;
+      }
+      if (line_start && c == '#') {
+        directive_ = true;
+        check_line_directive(i);
+      }
+      line_start = false;
+      if (c == '"') {
+        for (++i; i < text_.size() && text_[i] != '"' && text_[i] != '\n'; ++i) {
+          if (text_[i] == '\\') ++i;
+        }
+        token(i);
+      } else if (ident_start(c)) {
+        size_t begin = i;
+        while (i + 1 < text_.size() && ident_char(text_[i + 1])) ++i;
+        word(text_.substr(begin, i + 1 - begin), begin);
+      } else {
+        punct(c, i);
+      }
+    }
+    return hazard_;
+  }
+
+ private:
+  void fail(size_t at, std::string message) {
+    if (!found_) hazard_ = RecursionHazard{at, std::move(message)};
+    found_ = true;
+  }
+
+  // `#line N`: N must fit glslang's line counter.
+  void check_line_directive(size_t hash) {
+    size_t w = text_.find_first_not_of(" \t", hash + 1);
+    if (w == std::string_view::npos || text_.substr(w, 4) != "line") return;
+    size_t n = text_.find_first_not_of(" \t", w + 4);
+    if (n == std::string_view::npos || n == w + 4 || !std::isdigit(static_cast<unsigned char>(text_[n]))) return;
+    uint64_t value = 0;
+    for (size_t k = n; k < text_.size() && std::isdigit(static_cast<unsigned char>(text_[k])); ++k) {
+      value = std::min<uint64_t>(value * 10 + uint64_t(text_[k] - '0'), kMaxLineNumber + 1);
+    }
+    if (value > kMaxLineNumber) fail(n, fmt::format("#line number out of range (at most {})", kMaxLineNumber));
+  }
+
+  // Any token but a unary operator ends a run of them.
+  void token(size_t at, bool is_else = false) {
+    unary_ = 0;
+    if (statement_start_ == std::string_view::npos) statement_start_ = at;
+    if_chain_token(is_else);
+  }
+
+  void word(std::string_view w, size_t at) {
+    token(at, w == "else");
+    if (w == "if") {
+      IfChain& chain = if_chain();
+      if (chain.count++ == 0) chain.start = at;
+      if (chain.count > kMaxIfChain) {
+        fail(chain.start, fmt::format("more than {} if statements chained or nested (if ... else if ...)", kMaxIfChain));
+      }
+    }
+  }
+
+  void punct(char c, size_t at) {
+    if (is_unary_char(c)) {
+      if (unary_++ == 0) unary_start_ = at;
+      if (unary_ > kMaxUnaryRun) fail(unary_start_, fmt::format("more than {} unary operators in a row", kMaxUnaryRun));
+      if (statement_start_ == std::string_view::npos) statement_start_ = at;
+      if_chain_token(false);
+      return;
+    }
+    token(at);
+    if (c == '(' || c == '[' || c == '{') {
+      if (c == '{') end_statement();
+      if (++depth_ > kMaxNesting) fail(at, fmt::format("brackets nest more than {} deep", kMaxNesting));
+      if (depth_ >= 0 && size_t(depth_) >= if_chains_.size()) if_chains_.resize(size_t(depth_) + 1);
+      if (depth_ >= 0) if_chains_[size_t(depth_)] = {};
+    } else if (c == ')' || c == ']' || c == '}') {
+      if (depth_ > 0) --depth_;
+      if (c == '}') end_statement();
+    } else if (c == ';' || c == ',') {
+      end_statement();
+    } else if (c == '=' && is_assignment(text_, at)) {
+      if (++assignments_ > kMaxAssignmentChain) {
+        fail(statement_start_, fmt::format("more than {} assignments chained in one expression", kMaxAssignmentChain));
+      }
+    } else if (c == '?') {
+      if (++conditionals_ > kMaxAssignmentChain) {
+        fail(statement_start_, fmt::format("more than {} '?:' chained in one expression", kMaxAssignmentChain));
+      }
+    }
+  }
+
+  // ; , { } and the end of a directive end the chains of one expression; a
+  // statement ending (; }) lets an if chain go on only through `else`.
+  void end_statement() {
+    assignments_ = conditionals_ = 0;
+    statement_start_ = std::string_view::npos;
+    if_chain().pending_end = true;
+  }
+
+  void end_directive() {
+    directive_ = false;
+    unary_ = 0;
+    end_statement();
+  }
+
+  struct IfChain {
+    int count = 0;
+    size_t start = 0;
+    bool pending_end = false;
+  };
+
+  IfChain& if_chain() {
+    size_t d = size_t(std::max(depth_, 0));
+    if (d >= if_chains_.size()) if_chains_.resize(d + 1);
+    return if_chains_[d];
+  }
+
+  // A token after a statement's end breaks its depth's if chain unless it
+  // is `else`.
+  void if_chain_token(bool is_else) {
+    IfChain& chain = if_chain();
+    if (!chain.pending_end) return;
+    chain.pending_end = false;
+    if (!is_else) chain.count = 0;
+  }
+
+  std::string_view text_;
+  bool found_ = false, directive_ = false;
+  std::optional<RecursionHazard> hazard_;
+  int depth_ = 0, unary_ = 0, assignments_ = 0, conditionals_ = 0;
+  size_t unary_start_ = 0, statement_start_ = std::string_view::npos;
+  std::vector<IfChain> if_chains_{1};
+};
+
+}  // namespace
+
+std::optional<RecursionHazard> find_recursion_hazard(std::string_view text) { return HazardScan(text).run(); }
+
 std::string stage_define(Stage stage) { return "SHADER_STAGE_" + upper(stage_name(stage)); }
 
 AssembledSource assemble_source(const ir::Program& program, Stage stage, const std::vector<std::string>& keywords,

@@ -4,6 +4,7 @@
 // names the .shader file, so that glslang's messages point into it.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,9 +33,28 @@ struct AssembledSource {
 AssembledSource assemble_source(const ir::Program& program, Stage stage, const std::vector<std::string>& keywords,
                                 const BackendOptions& options, const std::string& shader_path);
 
-// glslang parses expressions recursively; a few thousand nested brackets
-// overflow the stack. Sources nesting deeper than this are refused first.
-inline constexpr int kMaxNesting = 256;
+// glslang's HLSL parser is recursive descent, its preprocessor evaluates
+// #if expressions recursively, and its AST walks recurse on every nested
+// node; a few thousand nested constructs overflow a thread's stack.
+// glslang runs on a large stack (worker.h), and text that nests deeper
+// than these limits is refused before glslang sees it (docs/cli.md, "Input
+// limits"). Legitimate code stays far below them.
+inline constexpr int kMaxNesting = 256;        // brackets ( [ { inside one another
+inline constexpr int kMaxUnaryRun = 256;       // unary operators in a row: ! ~ - +
+inline constexpr int kMaxAssignmentChain = 256;  // a = b = c ...; also a ? b : c ? ...
+inline constexpr int kMaxIfChain = 1024;       // if ... else if ... (and if (a) if (b) ...)
+// glslang keeps line numbers in an int and counts on from a #line.
+inline constexpr uint64_t kMaxLineNumber = 1000000000;
+
+// Where a text first exceeds one of the limits above, and how.
+struct RecursionHazard {
+  size_t offset = 0;  // where the run, chain or too-deep bracket starts
+  std::string message;
+};
+
+// The first hazard of `text` outside comments and strings; #if lines are
+// scanned like code. Also refuses `#line N` with N above kMaxLineNumber.
+std::optional<RecursionHazard> find_recursion_hazard(std::string_view text);
 
 // Offset of the bracket ( [ { that opens level `limit` + 1 outside comments
 // and strings, if any.

@@ -5,6 +5,9 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include <algorithm>
+#include <map>
+#include <optional>
 #include <string>
 
 namespace facet::backend {
@@ -40,7 +43,142 @@ bool run_passes(std::vector<uint32_t>& spirv, TargetEnv target, Diagnostics& dia
   return true;
 }
 
+// ---- [unroll] trip counts -------------------------------------------------
+// SPIR-V opcodes and the LoopControl bit read below (SPIR-V 1.5 spec, 3.32).
+constexpr uint32_t kOpTypeInt = 21, kOpConstant = 43, kOpFunction = 54, kOpIAdd = 128, kOpISub = 130,
+                   kOpPhi = 245, kOpLoopMerge = 246, kOpLabel = 248;
+constexpr uint32_t kOpIEqual = 170, kOpSLessThanEqual = 179;  // the integer comparisons are 170..179
+constexpr uint32_t kLoopControlUnroll = 0x1;
+
+struct Instruction {
+  uint32_t opcode;
+  const uint32_t* words;  // words[0] is the opcode word
+  uint32_t count;
+};
+
+struct ModuleIndex {
+  std::vector<Instruction> instructions;
+  std::map<uint32_t, size_t> defining;  // result id -> instruction
+  std::map<uint32_t, int64_t> int_constants;
+};
+
+uint32_t result_id(const Instruction& in) {
+  switch (in.opcode) {
+    case kOpLabel: case kOpTypeInt: return in.count > 1 ? in.words[1] : 0;
+    case kOpConstant: case kOpIAdd: case kOpISub: case kOpPhi: case kOpFunction: return in.count > 2 ? in.words[2] : 0;
+    default: return in.opcode >= kOpIEqual && in.opcode <= kOpSLessThanEqual && in.count > 2 ? in.words[2] : 0;
+  }
+}
+
+ModuleIndex index_module(const std::vector<uint32_t>& spirv) {
+  ModuleIndex m;
+  std::map<uint32_t, bool> int_types;  // id -> signed (32-bit and narrower only)
+  for (size_t at = 5; at < spirv.size();) {
+    uint32_t count = spirv[at] >> 16;
+    if (count == 0 || at + count > spirv.size()) break;
+    Instruction in{spirv[at] & 0xffff, &spirv[at], count};
+    if (uint32_t id = result_id(in)) m.defining[id] = m.instructions.size();
+    if (in.opcode == kOpTypeInt && count == 4 && in.words[2] <= 32) int_types[in.words[1]] = in.words[3] != 0;
+    if (in.opcode == kOpConstant && count == 4 && int_types.count(in.words[1])) {
+      m.int_constants[in.words[2]] = int_types[in.words[1]] ? int64_t(int32_t(in.words[3])) : int64_t(in.words[3]);
+    }
+    m.instructions.push_back(in);
+    at += count;
+  }
+  return m;
+}
+
+std::optional<int64_t> constant(const ModuleIndex& m, uint32_t id) {
+  auto it = m.int_constants.find(id);
+  return it == m.int_constants.end() ? std::nullopt : std::optional<int64_t>(it->second);
+}
+
+// For an induction variable `phi` (init constant, next = phi +- step), the
+// iterations until it passes a constant it is compared with, at most.
+uint64_t phi_trip_count(const ModuleIndex& m, const Instruction& phi) {
+  std::optional<int64_t> init, step;
+  uint32_t next_id = 0;
+  for (uint32_t k = 3; k + 1 < phi.count; k += 2) {
+    if (auto c = constant(m, phi.words[k])) {
+      init = c;
+    } else {
+      next_id = phi.words[k];
+    }
+  }
+  auto next = m.defining.find(next_id);
+  if (!init || next == m.defining.end()) return 0;
+  const Instruction& add = m.instructions[next->second];
+  if ((add.opcode != kOpIAdd && add.opcode != kOpISub) || add.count != 5) return 0;
+  uint32_t other = add.words[3] == phi.words[2] ? add.words[4] : add.words[4] == phi.words[2] ? add.words[3] : 0;
+  step = constant(m, other);
+  if (!step || *step == 0) return 0;
+  uint64_t longest = 0;
+  for (const Instruction& cmp : m.instructions) {
+    if (cmp.opcode < kOpIEqual || cmp.opcode > kOpSLessThanEqual || cmp.count != 5) continue;
+    bool uses = cmp.words[3] == phi.words[2] || cmp.words[4] == phi.words[2] || cmp.words[3] == next_id ||
+                cmp.words[4] == next_id;
+    if (!uses) continue;
+    std::optional<int64_t> bound = constant(m, cmp.words[3]);
+    if (!bound) bound = constant(m, cmp.words[4]);
+    if (!bound) continue;
+    uint64_t distance = uint64_t(*bound > *init ? *bound - *init : *init - *bound);
+    uint64_t stride = uint64_t(*step < 0 ? -*step : *step);
+    longest = std::max(longest, distance / stride + 1);
+  }
+  return longest;
+}
+
+uint64_t longest_marked_loop(const std::vector<uint32_t>& spirv) {
+  ModuleIndex m = index_module(spirv);
+  uint64_t longest = 0;
+  size_t header = 0;
+  for (size_t i = 0; i < m.instructions.size(); ++i) {
+    const Instruction& in = m.instructions[i];
+    if (in.opcode == kOpLabel) header = i;
+    if (in.opcode != kOpLoopMerge || in.count < 4 || !(in.words[3] & kLoopControlUnroll)) continue;
+    for (size_t k = header + 1; k < i && m.instructions[k].opcode == kOpPhi; ++k) {
+      longest = std::max(longest, phi_trip_count(m, m.instructions[k]));
+    }
+  }
+  return longest;
+}
+
+bool has_marked_loop(const std::vector<uint32_t>& spirv) {
+  for (size_t at = 5; at < spirv.size();) {
+    uint32_t count = spirv[at] >> 16;
+    if (count == 0) break;
+    if ((spirv[at] & 0xffff) == kOpLoopMerge && count >= 4 && at + 3 < spirv.size() &&
+        (spirv[at + 3] & kLoopControlUnroll)) {
+      return true;
+    }
+    at += count;
+  }
+  return false;
+}
+
 }  // namespace
+
+uint64_t longest_unrolled_loop(const std::vector<uint32_t>& spirv, TargetEnv target) {
+  if (!has_marked_loop(spirv)) return 0;
+  // The passes that bring loop counters into SSA form and fold constants
+  // into their bounds, as they run before the unroller.
+  spvtools::Optimizer optimizer(spirv_env(target));
+  optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+  optimizer.RegisterPass(spvtools::CreateMergeReturnPass())
+      .RegisterPass(spvtools::CreateInlineExhaustivePass())
+      .RegisterPass(spvtools::CreatePrivateToLocalPass())
+      .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
+      .RegisterPass(spvtools::CreateScalarReplacementPass())
+      .RegisterPass(spvtools::CreateLocalAccessChainConvertPass())
+      .RegisterPass(spvtools::CreateSSARewritePass())
+      .RegisterPass(spvtools::CreateCCPPass());
+  std::vector<uint32_t> ssa;
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);
+  if (!optimizer.Run(spirv.data(), spirv.size(), &ssa, options)) return longest_marked_loop(spirv);
+  return std::max(longest_marked_loop(ssa), longest_marked_loop(spirv));
+}
 
 spv_target_env spirv_env(TargetEnv target) {
   switch (target) {

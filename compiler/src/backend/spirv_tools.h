@@ -27,6 +27,13 @@ bool legalize_hlsl(std::vector<uint32_t>& spirv, TargetEnv target, Diagnostics& 
 // legalisation. False and a diagnostic when spirv-opt fails.
 bool optimize(std::vector<uint32_t>& spirv, OptLevel level, TargetEnv target, Diagnostics& diags);
 
+// The largest iteration count of a loop marked for unrolling ([unroll],
+// LoopControl Unroll) whose count is a constant, 0 when there is none.
+// spirv-opt's unroller (part of HLSL legalisation and -O) copies the body
+// that many times, with no limit of its own; the count is read from a copy
+// of the module brought into SSA form, as the unroller sees it.
+uint64_t longest_unrolled_loop(const std::vector<uint32_t>& spirv, TargetEnv target);
+
 // Removes SPV_GOOGLE_hlsl_functionality1 / user_type decorations, which were
 // only there for reflection (drivers need not support them).
 bool strip_reflection_info(std::vector<uint32_t>& spirv, TargetEnv target, Diagnostics& diags);

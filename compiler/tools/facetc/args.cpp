@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -34,6 +35,8 @@ struct RawArgs {
   std::string unity_version;
   bool check = false;
   std::string junit, sarif;
+  // Input limits (docs/cli.md): sizes as N, NK, NM or NG; "" keeps the default.
+  std::string max_includes, max_include_bytes, max_preprocessed_bytes, max_unroll, time_limit;
 };
 
 // Repeatable options take one value per occurrence (allow_extra_args(false)),
@@ -75,6 +78,13 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_flag("--build-unreachable", raw.build_unreachable,
                "also build variants of shortcut keywords facet's renderer never enables (lightmaps, ...)");
   app.add_option("--max-variants", raw.max_variants, "refuse passes with more variants (0: no limit)");
+  app.add_option("--max-includes", raw.max_includes, "#includes one program may follow (default 4096; 0: no limit)");
+  app.add_option("--max-include-bytes", raw.max_include_bytes,
+                 "bytes of one program's included files together (default 64M; 0: no limit)");
+  app.add_option("--max-preprocessed-bytes", raw.max_preprocessed_bytes,
+                 "bytes of one program after macro expansion (default 64M; 0: no limit)");
+  app.add_option("--max-unroll", raw.max_unroll, "iterations of one [unroll] loop (default 4096; 0: no limit)");
+  app.add_option("--time-limit", raw.time_limit, "seconds one stage may take to compile (default 60; 0: no limit)");
   app.add_flag("-w", raw.no_warnings, "suppress every warning");
   app.add_flag("--Werror", raw.werror, "treat warnings as errors (also -Werror)");
   app.add_option("--Wno", raw.disabled_groups, "switch a warning group off (also -Wno-<group>)")->allow_extra_args(false);
@@ -115,6 +125,12 @@ std::vector<std::string> compile_flags(const RawArgs& raw) {
   if (raw.debug_info) flags.push_back("-g");
   if (!raw.stdlib_dir.empty()) flags.insert(flags.end(), {"--stdlib-dir", raw.stdlib_dir});
   if (!raw.unity_version.empty()) flags.insert(flags.end(), {"--unity-version", raw.unity_version});
+  for (const auto& [name, value] : {std::pair{"--max-includes", &raw.max_includes},
+                                    std::pair{"--max-include-bytes", &raw.max_include_bytes},
+                                    std::pair{"--max-preprocessed-bytes", &raw.max_preprocessed_bytes},
+                                    std::pair{"--max-unroll", &raw.max_unroll}, std::pair{"--time-limit", &raw.time_limit}}) {
+    if (!value->empty()) flags.insert(flags.end(), {name, *value});
+  }
   if (!raw.no_cache && !raw.cache_dir.empty()) flags.insert(flags.end(), {"--cache-dir", raw.cache_dir});
   if (!raw.no_cache && !raw.cache_url.empty()) flags.insert(flags.end(), {"--remote-cache", raw.cache_url});
   return flags;
@@ -157,6 +173,41 @@ std::optional<std::string> apply_unity_version(const std::string& text, backend:
             major <= 99999 && minor <= 9;
   if (!ok) return fmt::format("--unity-version needs a version such as 2017.4 or 2019.4.1, got '{}'", text);
   options.unity_version = int(major * 100 + minor * 10 + std::min(patch, 9u));
+  return std::nullopt;
+}
+
+// "4096", "64K", "64M", "1G" (binary multiples) -> a count; nullopt when malformed.
+std::optional<uint64_t> parse_amount(const std::string& text) {
+  if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0]))) return std::nullopt;
+  size_t digits = std::min(text.find_first_not_of("0123456789"), text.size());
+  std::string suffix = text.substr(digits);
+  int shift = suffix.empty() ? 0 : suffix == "K" || suffix == "k" ? 10 : suffix == "M" || suffix == "m" ? 20
+                                   : suffix == "G" || suffix == "g" ? 30 : -1;
+  if (shift < 0 || digits > 12) return std::nullopt;
+  uint64_t value = std::stoull(text.substr(0, digits));
+  if (value > (uint64_t(1) << (62 - shift))) return std::nullopt;
+  return value << shift;
+}
+
+std::optional<std::string> apply_limits(const RawArgs& raw, backend::InputLimits& limits) {
+  struct Limit {
+    const char* name;
+    const std::string& text;
+    uint64_t* value;
+  };
+  uint64_t time_limit = limits.time_limit_s;
+  for (const Limit& l : {Limit{"--max-includes", raw.max_includes, &limits.max_includes},
+                         Limit{"--max-include-bytes", raw.max_include_bytes, &limits.max_include_bytes},
+                         Limit{"--max-preprocessed-bytes", raw.max_preprocessed_bytes, &limits.max_preprocessed_bytes},
+                         Limit{"--max-unroll", raw.max_unroll, &limits.max_unroll},
+                         Limit{"--time-limit", raw.time_limit, &time_limit}}) {
+    if (l.text.empty()) continue;
+    std::optional<uint64_t> value = parse_amount(l.text);
+    if (!value) return fmt::format("{} takes a number such as 4096, 64K, 64M or 1G (0: no limit), got '{}'", l.name, l.text);
+    *l.value = *value;
+  }
+  if (time_limit > 1000000) return fmt::format("--time-limit takes seconds, at most 1000000, got '{}'", raw.time_limit);
+  limits.time_limit_s = uint32_t(time_limit);
   return std::nullopt;
 }
 
@@ -304,6 +355,9 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   }
   if (error.empty()) {
     if (auto e = apply_unity_version(raw.unity_version, args.backend)) error = *e;
+  }
+  if (error.empty()) {
+    if (auto e = apply_limits(raw, args.backend.limits)) error = *e;
   }
   if (error.empty()) {
     if (auto e = choose_mode(raw, args)) error = *e;

@@ -1,0 +1,90 @@
+// Bounds what glslang's preprocessor can be made to produce, before it runs.
+//
+// glslang expands macros with no limit and no hook to stop it: a dozen
+// lines of `#define Mi M(i-1)+M(i-1)` ask for gigabytes. So the texts of a
+// program (its chunks, then each file the includer returns) are read here
+// first, and their macros' expansions are estimated:
+//
+//   * an object-like macro expands to at most the sum of its body's tokens,
+//     with each macro it names replaced by that macro's estimate;
+//   * a function-like macro to at most a + b * (its largest argument),
+//     where b counts the uses of parameters, multiplied through the
+//     function-like macros its body calls with them;
+//   * every code line is estimated the same way, summed over the program.
+//
+// The estimate is an upper bound of the real expansion for the macros it
+// knows (each definition counts at its largest, whether or not an #if
+// skips it; a macro that names itself is not expanded again, as in the
+// preprocessor). It knows the macros of the texts read so far: the
+// program's own chunks are read before glslang starts, so a use in them of
+// a macro that only an included file defines is counted as one token; the
+// per-program time limit (worker.h) is the backstop for that case.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace facet::backend {
+
+// The longest chain of macros naming macros (glslang re-expands each level
+// on its own recursion).
+inline constexpr int kMaxMacroDepth = 256;
+
+struct MacroExcess {
+  size_t offset = 0;  // in the text given to add_text
+  std::string message;
+};
+
+class MacroBudget {
+ public:
+  // `max_bytes`: the budget for the program's preprocessed text; 0: none.
+  explicit MacroBudget(uint64_t max_bytes) : max_bytes_(max_bytes) {}
+
+  // Reads the #defines and code of one text; the first excess, if any.
+  std::optional<MacroExcess> add_text(std::string_view text);
+
+  uint64_t estimated_bytes() const { return total_; }
+
+  struct Token {
+    std::string_view text;
+    size_t offset;
+  };
+  // Size of an expansion: at most a + b * (the largest argument's size).
+  struct Size {
+    uint64_t a = 0, b = 0;
+  };
+  // One #define of a name (every definition is kept: an #if may pick any).
+  struct Definition {
+    bool function_like = false;
+    std::vector<std::string> params;
+    std::string body;  // the body's tokens, one space apart
+    // Memo of measure(), valid while `generation` is the budget's.
+    Size size;
+    int depth = 0;
+    uint64_t generation = UINT64_MAX;
+    bool in_progress = false;
+  };
+
+ private:
+  std::optional<MacroExcess> define(const std::vector<Token>& line);
+  std::optional<MacroExcess> add_code(const std::vector<Token>& code);
+  Size measure(Definition& d, int& depth);
+  size_t measure_one(const std::vector<std::string_view>& tokens, size_t i, size_t end, const Definition* owner,
+                     Size& size, int& depth);
+  std::string too_big(std::string_view what, uint64_t bytes) const;
+
+  uint64_t max_bytes_;
+  uint64_t total_ = 0;
+  uint64_t generation_ = 0;  // bumped by every #define: memos go stale
+  std::map<std::string, std::vector<Definition>, std::less<>> macros_;
+  // Names some macro body named: defining one of them makes memos stale.
+  std::set<std::string, std::less<>> referenced_;
+  int recursion_ = 0;
+};
+
+}  // namespace facet::backend
