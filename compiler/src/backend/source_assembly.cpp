@@ -535,11 +535,16 @@ class HazardScan {
     token(at);
     if (c == '(' || c == '[' || c == '{') {
       if (c == '{') end_statement();
+      // HLSL has no braces inside [ ]; glslang's HLSL front end crashes on
+      // an initializer list there (float w[X = { 0.1 }; found by fuzzing).
+      if (c == '{' && !open_.empty() && open_.back() == '[') fail(at, "'{' inside '[ ]': a ']' is missing before it");
+      open_.push_back(c);
       if (++depth_ > kMaxNesting) fail(at, fmt::format("brackets nest more than {} deep", kMaxNesting));
       if (depth_ >= 0 && size_t(depth_) >= if_chains_.size()) if_chains_.resize(size_t(depth_) + 1);
       if (depth_ >= 0) if_chains_[size_t(depth_)] = {};
     } else if (c == ')' || c == ']' || c == '}') {
       if (depth_ > 0) --depth_;
+      if (!open_.empty()) open_.pop_back();
       if (c == '}') end_statement();
     } else if (c == ';' || c == ',') {
       end_statement();
@@ -595,6 +600,7 @@ class HazardScan {
   int depth_ = 0, unary_ = 0, assignments_ = 0, conditionals_ = 0;
   size_t unary_start_ = 0, statement_start_ = std::string_view::npos;
   std::vector<IfChain> if_chains_{1};
+  std::vector<char> open_;  // the brackets open at this point, innermost last
 };
 
 }  // namespace

@@ -71,6 +71,16 @@ TEST_F(BackendBudgetTest, LongRunOfNotIsRefusedWhereItStarts) {
   EXPECT_EQ(where(t, d), "5:27") << text_;
 }
 
+// Found by fuzz_hlsl: glslang's HLSL front end dereferences a null pointer
+// on an initializer list inside an array size; the pre-check refuses it.
+TEST_F(BackendBudgetTest, ABraceInsideAnArraySizeIsRefusedBeforeGlslang) {
+  TestShader t = inline_shader("static const float w[X = { 0.1 };\nfloat f(float a) { return a; }");
+  Diagnostic d = fail(t);
+  EXPECT_EQ(d.id, DiagId::backend_nesting_too_deep) << text_;
+  EXPECT_EQ(d.message, "'{' inside '[ ]': a ']' is missing before it");
+  EXPECT_EQ(where(t, d), "5:26") << text_;
+}
+
 TEST_F(BackendBudgetTest, LongRunOfMinusIsRefused) {
   TestShader t = inline_shader("float f(float a) { return " + repeat("- ", 100000) + "a; }");
   Diagnostic d = fail(t);
