@@ -1,5 +1,5 @@
 // Keyword sets, variant spaces, exact counts, enumeration and selection,
-// following Unity's rules (SPEC.md §3; the full rule list is docs/variants.md).
+// following Unity's rules (the full rule list is docs/variants.md).
 //
 //   Diagnostics diags;
 //   auto space = variants::build_keyword_space(program, diags);
@@ -99,7 +99,7 @@ using KeywordList = std::vector<std::string>;
 
 // ---- building -------------------------------------------------------------
 
-// Reads every keyword pragma of `program` (shortcuts expanded per SPEC.md §3)
+// Reads every keyword pragma of `program` (shortcuts expanded as docs/variants.md §2 lists them)
 // and its skip_variants. Reports every bad pragma before failing; warnings
 // (duplicates, unknown shortcut modifiers, unused skip_variants) survive a
 // success.

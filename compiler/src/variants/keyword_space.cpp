@@ -1,5 +1,5 @@
 // build_keyword_space: the keyword pragmas of one program, read with Unity's
-// rules (SPEC.md §3, docs/variants.md). Every bad pragma is reported before
+// rules (docs/variants.md). Every bad pragma is reported before
 // the build fails, so one run shows all of them.
 #include <algorithm>
 #include <array>

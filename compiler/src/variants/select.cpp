@@ -1,5 +1,5 @@
 // select_variant: which variant a draw uses, from material ∪ global keywords
-// (SPEC.md §3). Exact match, else Unity's closest match, else (strict) an
+// (docs/variants.md §6). Exact match, else Unity's closest match, else (strict) an
 // error naming the keyword combination that has no variant.
 #include <algorithm>
 #include <unordered_map>

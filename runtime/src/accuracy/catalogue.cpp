@@ -91,7 +91,7 @@ void visibility_row(StudyRow& row, std::function<double(double, double, double)>
                         {ggx_lobe(alpha, corrected), ggx_lobe(alpha, ref::FacetV_SmithGGXCorrelated)}});
   }
   lobe_metrics(row, settings);
-  // The pointwise error, as pbr-numerics.md states it (NoV, NoL >= 0.2).
+  // The pointwise error, as docs/accuracy.md states it (NoV, NoL >= 0.2).
   std::string pointwise;
   for (double alpha : {0.05, 0.2, 0.5}) {
     double worst = 0;

@@ -109,7 +109,7 @@ std::string study_html(const Study& study) {
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
   html += chart(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>detail</th><th>pbr-numerics.md anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
+          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td>"
                         "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
