@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "args.h"
+#include "find_shaders.h"
 #include "facet/compiler.h"
 #include "report_mode.h"
 #include "run.h"
@@ -42,12 +43,6 @@ struct ShaderCheck {
 // "file:line:col: error: message" of the first error (or "error: message"
 // without a location); "" when there is none.
 std::string first_error(const ShaderCheck& check);
-
-// The shaders the arguments name: FILE arguments as given, each DIR's
-// .shader files (recursively) sorted by path; duplicates once. A path that
-// does not exist, or a folder without .shader files, is an error line in
-// `errors`.
-std::vector<std::string> find_shaders(const std::vector<std::string>& inputs, std::vector<std::string>& errors);
 
 // Exit code: 0 every shader compiles, 1 one does not (or an input or report
 // failed).

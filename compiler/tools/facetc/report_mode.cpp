@@ -4,38 +4,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <filesystem>
-
 #include "facet/report.h"
+#include "find_shaders.h"
 #include "output_safety.h"
 #include "units.h"
 
 namespace facet::tools {
-namespace {
-namespace fs = std::filesystem;
-
-// Files as given; folders are searched for *.shader, sorted.
-std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
-  std::vector<std::string> out;
-  for (const std::string& input : inputs) {
-    std::error_code ec;
-    if (!fs::is_directory(input, ec)) {
-      out.push_back(input);
-      continue;
-    }
-    std::vector<std::string> found;
-    for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
-         it.increment(ec)) {
-      if (it->is_regular_file(ec) && it->path().extension() == ".shader") found.push_back(it->path().string());
-    }
-    std::sort(found.begin(), found.end());
-    out.insert(out.end(), found.begin(), found.end());
-  }
-  return out;
-}
-
-}  // namespace
-
 void show_diagnostics(const FacetcArgs& args, const Diagnostics& raw, const SourceMap& sources, Console& console,
                       nlohmann::json& json_diagnostics) {
   Diagnostics diags = apply_warning_options(raw, args.warnings);
@@ -110,7 +84,13 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
   std::vector<RunInput> inputs;
   add_inputs(inputs, args.material_files, "a materials file");
   add_inputs(inputs, args.strip_files, "a strip filter");
-  for (const std::string& path : expand_inputs(args.inputs)) {
+  std::vector<std::string> errors;
+  std::vector<std::string> paths = find_shaders(args.inputs, errors);
+  if (!errors.empty()) {
+    for (const std::string& e : errors) console.err << "facetc: error: " << e << "\n";
+    return 1;
+  }
+  for (const std::string& path : paths) {
     std::vector<std::string> read;
     auto r = report_one(args, compiler, path, strip, console, json_diagnostics, read);
     inputs.push_back({path, "a shader"});

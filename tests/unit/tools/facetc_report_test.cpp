@@ -20,16 +20,37 @@ TEST_F(FacetcTest, ReportFormatsAndFolders) {
   ASSERT_EQ(estimate.exit_code, 0) << estimate.err;
   EXPECT_THAT(estimate.out, HasSubstr("48 variants, 64 programs, 50 to compile; ~"));
 
-  FacetcRun json = facetc({"--report=json", std::string(FACET_SOURCE_DIR) + "/examples/shaders"});
+  // A folder of small shaders, one nested: the report compiles every
+  // variant, so the whole examples folder would cost minutes under the
+  // sanitizers.
+  fs::create_directories(dir_ / "shaders" / "nested");
+  fs::copy_file(example("VertexColor.shader"), dir_ / "shaders" / "VertexColor.shader");
+  fs::copy_file(example("DepthFade.shader"), dir_ / "shaders" / "nested" / "DepthFade.shader");
+  fs::copy_file(example("Unlit.shader"), dir_ / "shaders" / "Unlit.shader");
+  write_all(dir_ / "shaders" / "notes.txt", "not a shader");
+  FacetcRun json = facetc({"--report=json", "shaders"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
   auto doc = nlohmann::json::parse(json.out);
   EXPECT_EQ(doc["format"], "facet-variant-report");
-  EXPECT_GE(doc["shaders"].size(), 8u) << "every example in the folder";
-  EXPECT_EQ(doc["shaders"][0]["name"], "Examples/DepthFade") << "sorted by path (DepthFade.shader first)";
+  ASSERT_EQ(doc["shaders"].size(), 3u) << "every .shader in the folder and below it, nothing else";
+  EXPECT_EQ(doc["shaders"][0]["name"], "Examples/Unlit") << "sorted by path";
+  EXPECT_EQ(doc["shaders"][1]["name"], "Examples/VertexColor");
+  EXPECT_EQ(doc["shaders"][2]["name"], "Examples/DepthFade");
 
   FacetcRun html = facetc({"--report=html", "-o", "report.html", example("PhongMultiLight.shader")});
   ASSERT_EQ(html.exit_code, 0) << html.err;
   EXPECT_THAT(read_all(dir_ / "report.html"), HasSubstr("<svg class=\"chart-sets\""));
+}
+
+TEST_F(FacetcTest, ReportOfAMissingPathOrAnEmptyFolderIsAnError) {
+  fs::create_directories(dir_ / "empty");
+  FacetcRun missing = facetc({"--report", "absent.shader", "-o", "r.txt"});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_THAT(missing.err, HasSubstr("facetc: error: 'absent.shader' does not exist"));
+  FacetcRun empty = facetc({"--report", "empty", "-o", "r.txt"});
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_THAT(empty.err, HasSubstr("facetc: error: no .shader files under 'empty'"));
+  EXPECT_FALSE(fs::exists(dir_ / "r.txt"));
 }
 
 TEST_F(FacetcTest, ReportWithMaterialManifest) {
