@@ -65,7 +65,10 @@ target_args() {
     frontend) echo "-dict=$root/tests/fuzz/shaderlab.dict -max_len=4096" ;;
     hlsl) echo "-dict=$root/tests/fuzz/shaderlab.dict -max_len=2048" ;;
     package | cache) echo "-max_len=65536" ;;
-    image) echo "-max_len=65536" ;;
+    # OpenImageIO 2.4 leaks 31 bytes per refused file (ImageInput::geterror),
+    # which made libFuzzer run LeakSanitizer's whole-heap scan after nearly
+    # every input (six times slower); ASan and UBSan still check every read.
+    image) echo "-max_len=65536 -detect_leaks=0" ;;
     *) echo "-max_len=16384" ;;
   esac
 }

@@ -110,8 +110,89 @@ std::string rewrite_matrix_swizzles(std::string_view text) {
   return out;
 }
 
+namespace {
+
+// One declarator of a top-level declaration: "NAME" or "NAME = INIT".
+struct Declarator {
+  std::string_view name, init;  // init: "" without one
+};
+
+// "[uniform] TYPE D1, D2 = INIT, ...;" alone on its line (a trailing
+// comment is kept): the type, the declarators and what follows the ';'.
+// Initializers may hold commas inside brackets; an array declarator, a
+// semantic or a register makes it no such line.
+struct DeclarationLine {
+  std::string_view type;
+  std::vector<Declarator> declarators;
+  std::string_view rest;
+};
+
+std::string_view trim(std::string_view s) {
+  size_t b = s.find_first_not_of(" \t\r");
+  if (b == std::string_view::npos) return {};
+  return s.substr(b, s.find_last_not_of(" \t\r") + 1 - b);
+}
+
+bool is_identifier(std::string_view s) {
+  return !s.empty() && !(s[0] >= '0' && s[0] <= '9') && std::all_of(s.begin(), s.end(), is_ident);
+}
+
+std::optional<DeclarationLine> read_declaration_line(std::string_view line) {
+  // The ';' that ends the declaration, outside brackets.
+  int depth = 0;
+  size_t semicolon = std::string_view::npos;
+  std::vector<size_t> commas;
+  for (size_t i = 0; i < line.size() && semicolon == std::string_view::npos; ++i) {
+    char c = line[i];
+    if (c == '/' && i + 1 < line.size() && (line[i + 1] == '/' || line[i + 1] == '*')) return std::nullopt;
+    if (c == '"' || c == '{' || c == '}') return std::nullopt;
+    if (c == '(' || c == '[') ++depth;
+    if (c == ')' || c == ']') --depth;
+    if (depth < 0) return std::nullopt;
+    if (depth == 0 && c == ',') commas.push_back(i);
+    if (depth == 0 && c == ';') semicolon = i;
+  }
+  if (semicolon == std::string_view::npos || depth != 0) return std::nullopt;
+  std::string_view rest = line.substr(semicolon + 1);
+  std::string_view after = trim(rest);
+  if (!after.empty() && !after.starts_with("//")) return std::nullopt;
+
+  DeclarationLine out{.rest = rest};
+  std::string_view head = trim(line.substr(0, commas.empty() ? semicolon : commas[0]));
+  std::vector<std::string_view> parts;  // the first declarator's line: [uniform] TYPE NAME [= INIT]
+  size_t equals = head.find('=');
+  std::string_view words = trim(head.substr(0, equals));
+  for (size_t i = 0; i < words.size();) {
+    size_t w = words.find_first_not_of(" \t", i);
+    if (w == std::string_view::npos) break;
+    size_t e = words.find_first_of(" \t", w);
+    if (e == std::string_view::npos) e = words.size();
+    parts.push_back(words.substr(w, e - w));
+    i = e;
+  }
+  if (!parts.empty() && parts[0] == "uniform") parts.erase(parts.begin());
+  if (parts.size() != 2 || !is_identifier(parts[0]) || !is_identifier(parts[1])) return std::nullopt;
+  out.type = parts[0];
+  out.declarators.push_back(
+      {parts[1], equals == std::string_view::npos ? std::string_view() : trim(head.substr(equals + 1))});
+  for (size_t k = 0; k < commas.size(); ++k) {
+    size_t end = k + 1 < commas.size() ? commas[k + 1] : semicolon;
+    std::string_view item = trim(line.substr(commas[k] + 1, end - commas[k] - 1));
+    size_t eq = item.find('=');
+    std::string_view name = trim(item.substr(0, eq));
+    if (!is_identifier(name)) return std::nullopt;
+    out.declarators.push_back({name, eq == std::string_view::npos ? std::string_view() : trim(item.substr(eq + 1))});
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names) {
   if (names.empty()) return std::string(text);
+  auto assigned = [&](std::string_view name) {
+    return std::find(names.begin(), names.end(), std::string(name)) != names.end();
+  };
   std::string out;
   out.reserve(text.size());
   int depth = 0;
@@ -121,33 +202,24 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
     if (line_end == std::string_view::npos) line_end = text.size();
     std::string_view line = text.substr(line_begin, line_end - line_begin);
     std::string replaced;
-    if (depth == 0) {
-      // "[uniform] TYPE NAME;" alone on its line (a trailing comment is kept).
-      std::vector<std::string_view> words;
-      size_t i = 0, semicolon = std::string_view::npos;
-      while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-        if (i < line.size() && line[i] == ';') {
-          semicolon = i;
-          break;
+    std::optional<DeclarationLine> decl = depth == 0 ? read_declaration_line(line) : std::nullopt;
+    if (decl && std::any_of(decl->declarators.begin(), decl->declarators.end(),
+                            [&](const Declarator& d) { return assigned(d.name); })) {
+      // Each declarator on its own, on the same line; an assigned one as
+      // the uniform (with its initializer: fxc's default value) and a
+      // static copy of it that the program writes.
+      std::string type(decl->type);
+      for (const Declarator& d : decl->declarators) {
+        std::string name(d.name), init = d.init.empty() ? "" : " = " + std::string(d.init);
+        if (!replaced.empty()) replaced += ' ';
+        if (assigned(d.name)) {
+          std::string uniform = name + std::string(kAssignedUniformSuffix);
+          replaced += type + " " + uniform + init + "; static " + type + " " + name + " = " + uniform + ";";
+        } else {
+          replaced += type + " " + name + init + ";";
         }
-        size_t w = i;
-        while (i < line.size() && is_ident(line[i])) ++i;
-        if (i == w) break;
-        words.push_back(line.substr(w, i - w));
       }
-      bool rest_is_comment = semicolon != std::string_view::npos;
-      if (rest_is_comment) {
-        size_t after = line.find_first_not_of(" \t\r", semicolon + 1);
-        rest_is_comment = after == std::string_view::npos || line.substr(after, 2) == "//";
-      }
-      if (!words.empty() && words[0] == "uniform") words.erase(words.begin());
-      if (rest_is_comment && words.size() == 2 &&
-          std::find(names.begin(), names.end(), std::string(words[1])) != names.end()) {
-        std::string type(words[0]), name(words[1]), uniform = name + std::string(kAssignedUniformSuffix);
-        replaced = type + " " + uniform + "; static " + type + " " + name + " = " + uniform + ";" +
-                   std::string(line.substr(semicolon + 1));
-      }
+      replaced += decl->rest;
     }
     out += replaced.empty() ? std::string(line) : replaced;
     for (char c : line) depth += c == '{' ? 1 : c == '}' ? -1 : 0;

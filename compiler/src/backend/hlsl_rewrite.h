@@ -16,10 +16,12 @@ namespace facet::backend {
 std::string rewrite_matrix_swizzles(std::string_view text);
 
 // fxc lets a program assign to a global uniform (it writes a per-invocation
-// copy); glslang refuses. Each top-level declaration "TYPE NAME;" of one of
-// `names` becomes "TYPE NAME_facet_uniform; static TYPE NAME =
-// NAME_facet_uniform;" on the same line, so the program writes its copy and
-// the uniform keeps its place (reflection drops the suffix again).
+// copy); glslang refuses. A top-level declaration line "[uniform] TYPE A,
+// B = INIT, ...;" declaring one of `names` is split into one declaration per
+// name on the same line, and each assigned NAME becomes "TYPE
+// NAME_facet_uniform [= INIT]; static TYPE NAME = NAME_facet_uniform;", so
+// the program writes its copy and the uniform keeps its place (reflection
+// drops the suffix again).
 std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names);
 
 // The suffix rewrite_assigned_uniforms gives a uniform's declaration.

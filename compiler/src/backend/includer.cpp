@@ -159,7 +159,7 @@ glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path,
   ++include_count_;
   include_bytes_ += text.size();
   if (auto o = overrides_.find(path); o != overrides_.end()) text = o->second;
-  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark: glslang rejects it
+  while (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // UTF-8 byte-order marks: glslang rejects them
   if (auto refusal = check_text(path, text, header)) return refuse(std::move(*refusal));
   records_.push_back({path, includer ? includer : "", header, system});
   if (!is_glsl_file(path)) text = rewrite_assigned_uniforms(rewrite_matrix_swizzles(text), assigned_uniforms_);

@@ -603,6 +603,58 @@ class HazardScan {
   std::vector<char> open_;  // the brackets open at this point, innermost last
 };
 
+// ---- Unity's shader upgrade --------------------------------------------------
+// Unity 5.4 renamed the built-in matrices below; when it imports a shader it
+// rewrites the old names in the file (unless the file says
+// UNITY_SHADER_NO_UPGRADE), so shaders written for Unity 5.3 and earlier
+// still build. facet maps the old names by macros instead, for the names a
+// program uses and does not declare itself.
+struct RenamedBuiltin {
+  std::string_view old_name, new_name;
+};
+constexpr RenamedBuiltin kRenamedBuiltins[] = {
+    {"_Object2World", "unity_ObjectToWorld"},      {"_World2Object", "unity_WorldToObject"},
+    {"_LightMatrix0", "unity_WorldToLight"},       {"_World2Shadow", "unity_WorldToShadow[0]"},
+    {"_World2Shadow1", "unity_WorldToShadow[1]"}, {"_World2Shadow2", "unity_WorldToShadow[2]"},
+    {"_World2Shadow3", "unity_WorldToShadow[3]"},
+};
+
+struct UpgradeScan {
+  bool no_upgrade = false;
+  std::set<std::string_view> used, declared;
+};
+
+void scan_for_upgrade(std::string_view text, UpgradeScan& scan) {
+  if (text.find("UNITY_SHADER_NO_UPGRADE") != std::string_view::npos) scan.no_upgrade = true;
+  std::vector<GlslToken> tokens = glsl_tokens(text);
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i].kind != GlslToken::ident || tokens[i].directive) continue;
+    std::string_view word = text.substr(tokens[i].begin, tokens[i].end - tokens[i].begin);
+    for (const RenamedBuiltin& r : kRenamedBuiltins) {
+      if (word != r.old_name) continue;
+      scan.used.insert(r.old_name);
+      // "TYPE NAME;" (or "[", "=", ":"): the program's own uniform.
+      bool after_type = i > 0 && tokens[i - 1].kind == GlslToken::ident;
+      char next = i + 1 < tokens.size() ? text[tokens[i + 1].begin] : ';';
+      if (after_type && (next == ';' || next == '[' || next == '=' || next == ':' || next == ',')) {
+        scan.declared.insert(r.old_name);
+      }
+    }
+  }
+}
+
+void append_upgraded_names(std::string& out, const ir::Program& program) {
+  UpgradeScan scan;
+  for (const ir::SourceChunk& chunk : program.includes) scan_for_upgrade(chunk.text, scan);
+  scan_for_upgrade(program.body.text, scan);
+  if (scan.no_upgrade) return;
+  for (const RenamedBuiltin& r : kRenamedBuiltins) {
+    if (scan.used.count(r.old_name) && !scan.declared.count(r.old_name)) {
+      out += fmt::format("#define {} {}\n", r.old_name, r.new_name);
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<RecursionHazard> find_recursion_hazard(std::string_view text) { return HazardScan(text).run(); }
@@ -644,6 +696,7 @@ AssembledSource assemble_source(const ir::Program& program, Stage stage, const s
   // "#line 2" on line 1: the prelude's lines keep their physical numbers.
   out += fmt::format("#line 2 \"{}\"\n", kPreludeName);
   append_defines(out, program, stage, keywords, options);
+  append_upgraded_names(out, program);
   if (program.language == ir::ProgramLanguage::cg) {
     // Unity includes these implicitly in CGPROGRAM (not in HLSLPROGRAM);
     // with Unity's CGIncludes on the -I path, Unity's files are the ones found.

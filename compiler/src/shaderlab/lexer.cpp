@@ -72,7 +72,9 @@ std::optional<BadByte> find_bad_byte(std::string_view text) {
 }
 
 Lexer::Lexer(std::string_view text, Reporter& reporter) : text_(text), reporter_(reporter) {
-  if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+  // UTF-8 byte-order marks; editors that add one unconditionally leave two
+  // in files that already had one.
+  while (text_.substr(pos_, 3) == "\xEF\xBB\xBF") pos_ += 3;
 }
 
 Token Lexer::make(TokenKind kind, uint32_t begin, uint32_t end) {

@@ -229,7 +229,7 @@ void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
   auto shortcut = expand_shortcut(pragma.name);
   if (!shortcut) {
     Diagnostic& d = diags_.add(DiagId::pragma_unknown_shortcut, pragma.span,
-                               "unknown keyword shortcut '" + pragma.name + "'; the known shortcuts are " +
+                               "unknown keyword shortcut '" + pragma.name + "' adds no keywords; the known shortcuts are " +
                                    join(known_shortcuts(), ", "));
     std::vector<std::string> candidates = known_shortcuts();
     for (std::string& spelling : all_directive_spellings()) candidates.push_back(std::move(spelling));

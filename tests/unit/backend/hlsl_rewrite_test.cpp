@@ -1,4 +1,5 @@
-// Matrix swizzles, which glslang lacks, become element reads before glslang.
+// Rewrites before glslang: matrix swizzles, which glslang lacks, become
+// element reads; global uniforms a program assigns become static copies.
 #include <gtest/gtest.h>
 
 #include "backend/hlsl_rewrite.h"
@@ -32,6 +33,36 @@ INSTANTIATE_TEST_SUITE_P(
                     "// m._11\n/* m._22 */ \"m._33\" (m[3][3])"},
         RewriteCase{"five_components_stay", "m._11_12_13_14_21", "m._11_12_13_14_21"},
         RewriteCase{"lines_kept", "a = m._11;\nb = m._22;\n", "a = (m[0][0]);\nb = (m[1][1]);\n"}),
+    [](const testing::TestParamInfo<RewriteCase>& info) { return std::string(info.param.name); });
+
+class AssignedUniformTest : public testing::TestWithParam<RewriteCase> {};
+
+TEST_P(AssignedUniformTest, AssignedNamesBecomeStaticCopiesOnTheSameLine) {
+  EXPECT_EQ(rewrite_assigned_uniforms(GetParam().input, {"T", "col"}), GetParam().output);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Forms, AssignedUniformTest,
+    testing::Values(
+        RewriteCase{"single", "float T;", "float T_facet_uniform; static float T = T_facet_uniform;"},
+        RewriteCase{"uniform_keyword_and_comment", "uniform float T; // time",
+                    "float T_facet_uniform; static float T = T_facet_uniform; // time"},
+        RewriteCase{"list_splits", "float A,B, T ,N;",
+                    "float A; float B; float T_facet_uniform; static float T = T_facet_uniform; float N;"},
+        RewriteCase{"initializer_is_the_uniforms_default", "float3 col = float3(0, 0, 0);",
+                    "float3 col_facet_uniform = float3(0, 0, 0); static float3 col = col_facet_uniform;"},
+        RewriteCase{"list_with_initializers", "float N = max(1, 2), T = 0.5;",
+                    "float N = max(1, 2); float T_facet_uniform = 0.5; static float T = T_facet_uniform;"},
+        RewriteCase{"unassigned_list_stays", "float A, B;", "float A, B;"},
+        RewriteCase{"static_stays", "static float T;", "static float T;"},
+        RewriteCase{"semantic_stays", "float4 T : register(c0);", "float4 T : register(c0);"},
+        RewriteCase{"array_stays", "float T[4];", "float T[4];"},
+        RewriteCase{"prototype_stays", "float T(float x);", "float T(float x);"},
+        RewriteCase{"inside_a_function_stays", "void f() {\nfloat T;\n}", "void f() {\nfloat T;\n}"},
+        RewriteCase{"code_after_the_semicolon_stays", "float T; T = 1;", "float T; T = 1;"},
+        RewriteCase{"lines_kept", "int I;\nfloat T, col;\n",
+                    "int I;\nfloat T_facet_uniform; static float T = T_facet_uniform; float col_facet_uniform; "
+                    "static float col = col_facet_uniform;\n"}),
     [](const testing::TestParamInfo<RewriteCase>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -50,6 +50,26 @@ TEST(SourceAssemblyTest, HlslProgramHasNoImplicitIncludes) {
   EXPECT_NE(s.text.find("#define SHADER_STAGE_FRAGMENT 1"), std::string::npos);
 }
 
+TEST(SourceAssemblyTest, UnityFiveNamesAProgramUsesAreMappedToTheirNewNames) {
+  ir::Program p = program(ir::ProgramLanguage::cg,
+                          "float4 w = mul(_Object2World, v);\nfloat3 n = mul(v.normal, (float3x3)_World2Object);\n"
+                          "float4 s = mul(_World2Shadow1, w); // _LightMatrix0 only in a comment\n",
+                          3);
+  AssembledSource s = assemble_source(p, Stage::vertex, {}, {}, "a.shader");
+  EXPECT_NE(s.prelude.find("#define _Object2World unity_ObjectToWorld\n"), std::string::npos) << s.prelude;
+  EXPECT_NE(s.prelude.find("#define _World2Object unity_WorldToObject\n"), std::string::npos);
+  EXPECT_NE(s.prelude.find("#define _World2Shadow1 unity_WorldToShadow[1]\n"), std::string::npos);
+  EXPECT_EQ(s.prelude.find("_LightMatrix0"), std::string::npos) << "only names the code uses";
+  EXPECT_EQ(s.prelude.find("_World2Shadow "), std::string::npos);
+}
+
+TEST(SourceAssemblyTest, AProgramThatDeclaresAnOldNameOrOptsOutKeepsIt) {
+  ir::Program own = program(ir::ProgramLanguage::hlsl, "float4x4 _Object2World;\nfloat4 w = mul(_Object2World, v);\n", 3);
+  EXPECT_EQ(assemble_source(own, Stage::vertex, {}, {}, "a").prelude.find("_Object2World"), std::string::npos);
+  ir::Program opted = program(ir::ProgramLanguage::cg, "// UNITY_SHADER_NO_UPGRADE\nfloat4 w = mul(_Object2World, v);\n", 3);
+  EXPECT_EQ(assemble_source(opted, Stage::vertex, {}, {}, "a").prelude.find("_Object2World"), std::string::npos);
+}
+
 TEST(SourceAssemblyTest, GlslStartsWithVersionAndDefinesTheStage) {
   AssembledSource s = assemble_source(program(ir::ProgramLanguage::glsl, "void main() {}\n", 9), Stage::fragment, {},
                                       {}, "/p/g.shader");

@@ -161,3 +161,52 @@ ENDCG
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+// What shaders written for Unity 5.3 and earlier do, and Unity still builds:
+// the matrix names Unity 5.4 renamed, a file saved with two byte-order marks,
+// globals declared in a list and assigned (fxc writes a per-invocation copy),
+// and a keyword shortcut Unity does not have (ignored, with a warning).
+const char* kUnityFiveShader = "\xEF\xBB\xBF\xEF\xBB\xBF" R"(Shader "Old/Upgraded" { SubShader { Pass {
+Tags { "LightMode" = "ForwardBase" }
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#pragma multi_compile_fwdbase_fullshadows
+float A, T, N;
+float3 col = float3(0, 0, 0);
+struct v2f { float4 pos : SV_POSITION; float3 world : TEXCOORD0; float3 normal : TEXCOORD1; };
+v2f vert(float4 v : POSITION, float3 n : NORMAL) {
+  v2f o;
+  o.pos = UnityObjectToClipPos(v);
+  o.world = mul(_Object2World, v).xyz;
+  o.normal = normalize(mul(float4(n, 0), _World2Object).xyz);
+  return o;
+}
+float4 frag(v2f i) : SV_Target {
+  for (int k = 0; k < 4; ++k) { T += N; col += i.world * T; }
+  return float4(col * A + i.normal, 1);
+}
+ENDCG
+} } }
+)";
+
+TEST_F(FacetcTest, AUnityFiveShaderBuildsAsUnityUpgradesIt) {
+  write_all(dir_ / "old.shader", kUnityFiveShader);
+  FacetcRun run = facetc({"old.shader", "-o", "old.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("old.shader:6:1: warning: unknown keyword shortcut 'multi_compile_fwdbase_fullshadows' "
+                                 "adds no keywords"));
+  EXPECT_THAT(run.err, HasSubstr("[-Wunknown-pragma]"));
+  FacetcRun dump = facetc({"--dump", "old.facetpkg"});
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  EXPECT_THAT(dump.out, HasSubstr("\"T\"")) << "the assigned global stays a uniform under its own name";
+  FacetcRun werror = facetc({"old.shader", "-Werror", "-o", "w.facetpkg"});
+  EXPECT_EQ(werror.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "w.facetpkg"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing

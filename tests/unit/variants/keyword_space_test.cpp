@@ -272,20 +272,24 @@ TEST_F(VariantsBuildTest, UnknownModifierWarnsNamingTheKnownOnes) {
             "nolightmap, nodynlightmap, nodirlightmap, noshadowmask, novertexlight, nolppv");
 }
 
-TEST_F(VariantsBuildTest, UnknownShortcutIsALocatedErrorNamingTheKnownOnes) {
+TEST_F(VariantsBuildTest, UnknownShortcutIsALocatedWarningNamingTheKnownOnesAndAddsNothing) {
   Lines lines = {"multi_compile _ A", "multi_compile_fwdbasealfa"};
-  build_fails(lines);
+  KeywordSpace space = build(lines);
+  ASSERT_EQ(space.sets.size(), 1u) << "only 'multi_compile _ A'";
+  EXPECT_EQ(space.sets[0].keywords, (Keywords{"", "A"}));
   const Diagnostic& d = first(DiagId::pragma_unknown_shortcut);
+  EXPECT_EQ(d.severity, Severity::warning);
   EXPECT_EQ(d.span, line_span(lines, 1));
   EXPECT_EQ(d.message,
-            "unknown keyword shortcut 'multi_compile_fwdbasealfa'; the known shortcuts are multi_compile_fwdbase, "
+            "unknown keyword shortcut 'multi_compile_fwdbasealfa' adds no keywords; the known shortcuts are "
+            "multi_compile_fwdbase, "
             "multi_compile_fwdadd, multi_compile_fwdadd_fullshadows, multi_compile_shadowcaster, "
             "multi_compile_fwdbasealpha, multi_compile_lightpass, multi_compile_shadowcollector, "
             "multi_compile_prepassfinal, multi_compile_fog, multi_compile_instancing, multi_compile_particles");
 }
 
 TEST_F(VariantsBuildTest, MisspeltShortcutOrSuffixSuggestsTheClosest) {
-  build_fails({"multi_compile_fwdbas", "multi_compile_fragmnet _ A"});
+  build({"multi_compile_fwdbas", "multi_compile_fragmnet _ A"});
   ASSERT_EQ(count(DiagId::pragma_unknown_shortcut), 2u);
   std::vector<std::string> notes;
   for (const Diagnostic& d : diags.all()) notes.push_back(d.notes.empty() ? "" : d.notes[0].message);
@@ -329,8 +333,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "letters, digits and '_'"}));
 
 TEST_F(VariantsBuildTest, EveryBadPragmaIsReported) {
-  build_fails({"multi_compile", "shader_feature A.B", "multi_compile_nope"});
+  build_fails({"multi_compile", "shader_feature A.B", "multi_compile_nope", "shader_feature_vertx _ B"});
   EXPECT_EQ(diags.error_count(), 3u);
+  EXPECT_EQ(count(DiagId::pragma_unknown_shortcut), 1u) << "a warning, reported with the errors";
 }
 
 TEST_F(VariantsBuildTest, OnlyUnderscoresWarnsAndAddsNothing) {

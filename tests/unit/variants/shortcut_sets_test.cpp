@@ -128,8 +128,12 @@ TEST(ShortcutSetsTest, FullShadowsPairsEachShadowKindWithItsLights) {
     bool depth = std::count(k.begin(), k.end(), "SHADOWS_DEPTH");
     bool cube = std::count(k.begin(), k.end(), "SHADOWS_CUBE");
     bool screen = std::count(k.begin(), k.end(), "SHADOWS_SCREEN");
-    if (soft) EXPECT_TRUE(depth || cube) << ::testing::PrintToString(k);
-    if (depth) EXPECT_TRUE(std::count(k.begin(), k.end(), "SPOT")) << ::testing::PrintToString(k);
+    if (soft) {
+      EXPECT_TRUE(depth || cube) << ::testing::PrintToString(k);
+    }
+    if (depth) {
+      EXPECT_TRUE(std::count(k.begin(), k.end(), "SPOT")) << ::testing::PrintToString(k);
+    }
     if (screen) {
       EXPECT_TRUE(std::count(k.begin(), k.end(), "DIRECTIONAL") || std::count(k.begin(), k.end(), "DIRECTIONAL_COOKIE"));
     }
