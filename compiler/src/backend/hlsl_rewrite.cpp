@@ -117,11 +117,12 @@ struct Declarator {
   std::string_view name, init;  // init: "" without one
 };
 
-// "[uniform] TYPE D1, D2 = INIT, ...;" alone on its line (a trailing
-// comment is kept): the type, the declarators and what follows the ';'.
-// Initializers may hold commas inside brackets; an array declarator, a
-// semantic or a register makes it no such line.
+// "[uniform] TYPE D1, D2 = INIT, ...;" at the start of `line`: the type,
+// the declarators and what follows the ';'. Initializers may hold commas
+// inside brackets; an array declarator, a semantic or a register makes it
+// no such declaration.
 struct DeclarationLine {
+  std::string_view verbatim;  // a static declaration, kept as written
   std::string_view type;
   std::vector<Declarator> declarators;
   std::string_view rest;
@@ -137,7 +138,7 @@ bool is_identifier(std::string_view s) {
   return !s.empty() && !(s[0] >= '0' && s[0] <= '9') && std::all_of(s.begin(), s.end(), is_ident);
 }
 
-std::optional<DeclarationLine> read_declaration_line(std::string_view line) {
+std::optional<DeclarationLine> read_declaration(std::string_view line) {
   // The ';' that ends the declaration, outside brackets.
   int depth = 0;
   size_t semicolon = std::string_view::npos;
@@ -153,11 +154,12 @@ std::optional<DeclarationLine> read_declaration_line(std::string_view line) {
     if (depth == 0 && c == ';') semicolon = i;
   }
   if (semicolon == std::string_view::npos || depth != 0) return std::nullopt;
-  std::string_view rest = line.substr(semicolon + 1);
-  std::string_view after = trim(rest);
-  if (!after.empty() && !after.starts_with("//")) return std::nullopt;
-
-  DeclarationLine out{.rest = rest};
+  DeclarationLine out{.rest = line.substr(semicolon + 1)};
+  std::string_view statement = trim(line.substr(0, semicolon));
+  if (statement.starts_with("static ") || statement.starts_with("static\t")) {
+    out.verbatim = trim(line.substr(0, semicolon + 1));
+    return out;
+  }
   std::string_view head = trim(line.substr(0, commas.empty() ? semicolon : commas[0]));
   std::vector<std::string_view> parts;  // the first declarator's line: [uniform] TYPE NAME [= INIT]
   size_t equals = head.find('=');
@@ -186,6 +188,40 @@ std::optional<DeclarationLine> read_declaration_line(std::string_view line) {
   return out;
 }
 
+// A line of declarations only (a trailing comment is kept), with the
+// assigned names of `assigned` rewritten; nullopt when the line is anything
+// else or declares none of them. Each declarator gets a declaration of its
+// own; an assigned one becomes the uniform (with its initializer: fxc's
+// default value) and a static copy of it that the program writes.
+template <typename Assigned>
+std::optional<std::string> rewrite_declarations(std::string_view line, const Assigned& assigned) {
+  std::string out;
+  bool any = false;
+  std::string_view rest = line;
+  while (true) {
+    std::optional<DeclarationLine> decl = read_declaration(rest);
+    if (!decl) return std::nullopt;
+    if (!decl->verbatim.empty()) out += (out.empty() ? "" : " ") + std::string(decl->verbatim);
+    std::string type(decl->type);
+    for (const Declarator& d : decl->declarators) {
+      std::string name(d.name), init = d.init.empty() ? "" : " = " + std::string(d.init);
+      if (!out.empty()) out += ' ';
+      if (assigned(d.name)) {
+        std::string uniform = name + std::string(kAssignedUniformSuffix);
+        out += type + " " + uniform + init + "; static " + type + " " + name + " = " + uniform + ";";
+        any = true;
+      } else {
+        out += type + " " + name + init + ";";
+      }
+    }
+    rest = decl->rest;
+    std::string_view after = trim(rest);
+    if (after.empty() || after.starts_with("//")) break;
+  }
+  if (!any) return std::nullopt;
+  return out + std::string(rest);
+}
+
 }  // namespace
 
 std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names) {
@@ -201,27 +237,8 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
     size_t line_end = text.find('\n', line_begin);
     if (line_end == std::string_view::npos) line_end = text.size();
     std::string_view line = text.substr(line_begin, line_end - line_begin);
-    std::string replaced;
-    std::optional<DeclarationLine> decl = depth == 0 ? read_declaration_line(line) : std::nullopt;
-    if (decl && std::any_of(decl->declarators.begin(), decl->declarators.end(),
-                            [&](const Declarator& d) { return assigned(d.name); })) {
-      // Each declarator on its own, on the same line; an assigned one as
-      // the uniform (with its initializer: fxc's default value) and a
-      // static copy of it that the program writes.
-      std::string type(decl->type);
-      for (const Declarator& d : decl->declarators) {
-        std::string name(d.name), init = d.init.empty() ? "" : " = " + std::string(d.init);
-        if (!replaced.empty()) replaced += ' ';
-        if (assigned(d.name)) {
-          std::string uniform = name + std::string(kAssignedUniformSuffix);
-          replaced += type + " " + uniform + init + "; static " + type + " " + name + " = " + uniform + ";";
-        } else {
-          replaced += type + " " + name + init + ";";
-        }
-      }
-      replaced += decl->rest;
-    }
-    out += replaced.empty() ? std::string(line) : replaced;
+    std::optional<std::string> replaced = depth == 0 ? rewrite_declarations(line, assigned) : std::nullopt;
+    out += replaced ? *replaced : std::string(line);
     for (char c : line) depth += c == '{' ? 1 : c == '}' ? -1 : 0;
     if (depth < 0) depth = 0;
     if (line_end == text.size()) break;

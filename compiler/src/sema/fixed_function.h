@@ -21,6 +21,9 @@ namespace facet::sema {
 struct FfValue {
   std::array<float, 4> literal{0, 0, 0, 0};  // numbers: literal[0]
   std::string property;
+  // "(0, 0, 0, [_Alpha])": a colour component read from a float property
+  // ("" where literal holds it).
+  std::array<std::string, 4> component_properties;
   SourceSpan span;
 };
 

@@ -41,8 +41,13 @@ std::string color_expr(const FfValue& v, Uniforms& u) {
     u.add(v.property, "float4");
     return v.property;
   }
-  return fmt::format("float4({}, {}, {}, {})", number(v.literal[0]), number(v.literal[1]), number(v.literal[2]),
-                     number(v.literal[3]));
+  std::array<std::string, 4> parts;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const std::string& property = v.component_properties[i];
+    if (!property.empty()) u.add(property, "float");
+    parts[i] = property.empty() ? number(v.literal[i]) : property;
+  }
+  return fmt::format("float4({}, {}, {}, {})", parts[0], parts[1], parts[2], parts[3]);
 }
 
 std::string scalar_expr(const FfValue& v, Uniforms& u) {
@@ -54,7 +59,9 @@ std::string scalar_expr(const FfValue& v, Uniforms& u) {
 }
 
 bool is_set(const FfValue& v) {
-  return !v.property.empty() || v.literal[0] != 0 || v.literal[1] != 0 || v.literal[2] != 0;
+  bool component_property = std::any_of(v.component_properties.begin(), v.component_properties.begin() + 3,
+                                        [](const std::string& p) { return !p.empty(); });
+  return !v.property.empty() || component_property || v.literal[0] != 0 || v.literal[1] != 0 || v.literal[2] != 0;
 }
 
 std::string_view source_name(FfSource s) {

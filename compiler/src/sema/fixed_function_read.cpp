@@ -47,6 +47,7 @@ class Reader {
   }
 
   // "(r, g, b[, a])" or "[_Prop]"; a number alone is accepted for scalars.
+  // A colour's component may itself be a float property: "(1, 1, 1, [_A])".
   bool value(FfValue& out, bool color, std::string_view context) {
     if (peek() && peek()->kind == Token::Kind::property) {
       const Token& t = take();
@@ -66,14 +67,19 @@ class Reader {
     if (!at_symbol("(")) return expected("a colour '(r, g, b, a)' or '[_Prop]'", context);
     SourceSpan open = take().span;
     std::vector<float> numbers;
-    while (peek() && peek()->kind == Token::Kind::number) {
-      numbers.push_back(float(take().number));
+    std::array<std::string, 4> properties;
+    while (peek() && (peek()->kind == Token::Kind::number || peek()->kind == Token::Kind::property)) {
+      const Token& t = take();
+      if (t.kind == Token::Kind::property && numbers.size() < properties.size()) properties[numbers.size()] = t.text;
+      numbers.push_back(t.kind == Token::Kind::number ? float(t.number) : 0.0f);
       if (!at_symbol(",")) break;
       take();
     }
     if (!expect_symbol(")", context)) return false;
     SourceSpan span{open.file, open.begin, c_.body[pos_ - 1].span.end};
-    return set_color(out, numbers, span);
+    if (!set_color(out, numbers, span)) return false;
+    out.component_properties = properties;
+    return true;
   }
 
   bool set_color(FfValue& out, const std::vector<float>& numbers, SourceSpan span) {

@@ -113,6 +113,13 @@ TEST(FixedFunctionTest, ConstantColorMayBeAProperty) {
   EXPECT_NE(a->hlsl().find("float4 _Color;"), std::string::npos);
 }
 
+TEST(FixedFunctionTest, AConstantColorComponentMayBeAFloatProperty) {
+  // Unity's legacy motion blur: "ConstantColor (0,0,0,[_AccumOrig])".
+  auto a = ok("SetTexture [_MainTex] { ConstantColor (0,0,0,[_AccumOrig]) Combine texture, constant }");
+  EXPECT_NE(a->hlsl().find("ffConstant = float4(0, 0, 0, _AccumOrig);"), std::string::npos) << a->hlsl();
+  EXPECT_NE(a->hlsl().find("float _AccumOrig;"), std::string::npos);
+}
+
 TEST(FixedFunctionTest, MatrixTransformsTheUVs) {
   auto a = ok("SetTexture [_MainTex] { matrix [_TexMatrix] combine texture }");
   EXPECT_NE(a->hlsl().find("float4x4 _TexMatrix;"), std::string::npos);
