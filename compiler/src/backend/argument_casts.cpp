@@ -179,11 +179,17 @@ uint32_t line_count(std::string_view text) { return uint32_t(std::count(text.beg
 }  // namespace
 
 std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::string& root_name,
-                                          const std::vector<LogMessage>& messages) {
+                                          const std::vector<LogMessage>& messages,
+                                          const std::map<std::string, std::string>& included) {
   std::vector<ir::SourceChunk*> chunks;
   for (ir::SourceChunk& c : program.includes) chunks.push_back(&c);
   chunks.push_back(&program.body);
+  // Definitions: in the program's chunks and the files it includes.
   std::vector<const ir::SourceChunk*> readonly(chunks.begin(), chunks.end());
+  std::vector<ir::SourceChunk> files;
+  files.reserve(included.size());
+  for (const auto& [path, text] : included) files.push_back({text, {}, 1, path});
+  for (const ir::SourceChunk& f : files) readonly.push_back(&f);
   // The texts as written: spans are computed in them, not in the rewrites.
   std::vector<std::string> originals;
   for (const ir::SourceChunk* c : chunks) originals.push_back(c->text);

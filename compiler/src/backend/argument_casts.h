@@ -21,12 +21,14 @@ struct CastCall {
 
 // Rewrites, in `program`'s chunks that `root_name` names, the calls that
 // `messages` reports as "no matching overloaded function found" for a
-// function the program defines with one definition of the call's arity:
-// every scalar or vector argument of an `in` parameter becomes
-// "(type)(argument)". Lines keep their breaks, so #line mapping still holds.
-// Returns the calls rewritten (none: nothing to retry).
+// function the program (or a file it includes, of `included`: text by path)
+// defines with one definition of the call's arity: every scalar or vector
+// argument of an `in` parameter becomes "(type)(argument)". Lines keep their
+// breaks, so #line mapping still holds. Returns the calls rewritten (none:
+// nothing to retry).
 std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::string& root_name,
-                                          const std::vector<LogMessage>& messages);
+                                          const std::vector<LogMessage>& messages,
+                                          const std::map<std::string, std::string>& included);
 
 // The same for calls in included files: `texts` holds each file's text by
 // the path glslang names (edited in place; a file not yet in it is read

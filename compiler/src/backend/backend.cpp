@@ -290,7 +290,7 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
     ir::Program retry = cast_program ? *cast_program : program;
     std::vector<LogMessage> messages = parse_info_log(out.parse_log);
     std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, assigned);
-    std::vector<CastCall> more = cast_rejected_calls(retry, source.root_name, messages);
+    std::vector<CastCall> more = cast_rejected_calls(retry, source.root_name, messages, includer->returned_texts());
     // The files as written go to the SourceMap first, so warnings point at them.
     add_included_files(*includer, sources);
     std::map<std::string, std::string> retry_overrides = overrides;

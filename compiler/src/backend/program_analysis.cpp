@@ -236,7 +236,7 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
   // the arguments cast, as Backend::compile compiles them (and warns there).
   if (!out.ok && program.language != ir::ProgramLanguage::glsl) {
     ir::Program cast = program;
-    if (!cast_rejected_calls(cast, source.root_name, parse_info_log(out.parse_log)).empty()) {
+    if (!cast_rejected_calls(cast, source.root_name, parse_info_log(out.parse_log), includer->returned_texts()).empty()) {
       AssembledSource cast_source;
       Diagnostics refused;  // the program's text passed these checks before its casts
       std::unique_ptr<FileIncluder> cast_includer = checked_includer(cast, cast_source, options, stdlib, refused);

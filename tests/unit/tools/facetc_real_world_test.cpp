@@ -159,6 +159,29 @@ ENDCG
   EXPECT_THAT(run.err, HasSubstr("brdf.cginc:7:10: warning: implicit truncation of vector type in a call to 'spec'"));
 }
 
+// The other way round: the call in the shader, the definition (with an
+// inout parameter and a default argument) in an included file.
+TEST_F(FacetcTest, ACallInTheShaderToAFunctionOfAnIncludedFileIsCast) {
+  write_all(dir_ / "sdf.cginc", "float cells(inout float2 p, float count, bool mirror = false) {\n"
+                               "  p *= count;\n  return mirror ? -count : count;\n}\n");
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#include "sdf.cginc"
+float4 vert(float4 v : POSITION) : SV_Position { return v; }
+float4 frag() : SV_Target {
+  float2 p = 1, period = 6;
+  return cells(p, period, true);
+}
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"s.shader", "-o", "s.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("s.shader:9:10: warning: implicit truncation of vector type in a call to 'cells'"));
+}
+
 }  // namespace
 }  // namespace facet::tools::testing
 
