@@ -140,7 +140,7 @@
 #define SAMPLE_DEPTH_CUBE_TEXTURE(tex, uv) (texCUBE(tex, uv).r)
 #define UNITY_SAMPLE_DEPTH(value) (value).r
 // Screen-space textures are plain 2D textures (no single-pass stereo arrays).
-#define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
+#define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex;  // with its ";", as Unity has it
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)
 #define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) tex2Dproj(tex, UNITY_PROJ_COORD(uv)).r

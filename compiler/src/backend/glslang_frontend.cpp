@@ -1,10 +1,15 @@
 #include "backend/glslang_frontend.h"
 
+#include "backend/global_declarations.h"
+#include "backend/reachable.h"
+
+#include <fmt/format.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include <memory>
+#include <optional>
 #include <string_view>
 
 namespace facet::backend {
@@ -246,6 +251,26 @@ std::string missing_stage_attribute(const glslang::TIntermediate& intermediate, 
          "\n";
 }
 
+// The preprocessed text with its #pragma lines blanked but pack_matrix, the
+// one glslang's HLSL front end acts on: the others (vertex, multi_compile,
+// skip_variants, ...) are facet's, and glslang's preprocessor writes a long
+// one back as a single token that its parser then refuses.
+std::string without_unity_pragmas(std::string text) {
+  for (size_t line = 0; line < text.size();) {
+    size_t end = text.find('\n', line);
+    if (end == std::string::npos) end = text.size();
+    size_t first = text.find_first_not_of(" \t", line);
+    if (first < end && text.compare(first, 7, "#pragma") == 0) {
+      size_t word = text.find_first_not_of(" \t", first + 7);
+      if (word >= end || text.compare(word, 11, "pack_matrix") != 0) {
+        std::fill(text.begin() + long(line), text.begin() + long(end), ' ');
+      }
+    }
+    line = end + 1;
+  }
+  return text;
+}
+
 }  // namespace
 
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
@@ -269,9 +294,27 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
                           const std::string& entry, const BackendOptions& options, FileIncluder& includer) {
   GlslangOutput out;
   EShMessages messages = messages_for(language, options);
+  // HLSL: preprocessed first, and only what the entry point reaches is
+  // compiled, as fxc does (with -g the module embeds the source as written).
+  std::string reduced;
+  const std::string* program_text = &source.text;
+  if (is_hlsl(language) && !options.debug_info) {
+    GlslangOutput preprocessed = preprocess_glslang(source, language, stage, options, includer);
+    if (!preprocessed.ok) {
+      out.parse_log = std::move(preprocessed.parse_log);
+      return out;
+    }
+    reduced = without_unreachable_functions(without_unity_pragmas(preprocessed.preprocessed), entry);
+    program_text = &reduced;
+    if (std::optional<DeclarationProblem> problem = find_declaration_problem(reduced)) {
+      std::string file = problem->file.empty() ? source.root_name : problem->file;
+      out.parse_log = fmt::format("ERROR: {}:{}: '{}' : {}\n", file, problem->line, problem->token, problem->message);
+      return out;
+    }
+  }
   glslang::TShader shader(to_glslang(stage));
-  const char* text = source.text.c_str();
-  const int length = int(source.text.size());
+  const char* text = program_text->c_str();
+  const int length = int(program_text->size());
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, entry, options);

@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "driver/build_plan.h"
-#include "driver/reachable.h"
+#include "backend/reachable.h"
 
 namespace facet::driver {
 namespace {

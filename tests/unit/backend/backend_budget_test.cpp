@@ -81,6 +81,37 @@ TEST_F(BackendBudgetTest, ABraceInsideAnArraySizeIsRefusedBeforeGlslang) {
   EXPECT_EQ(where(t, d), "5:26") << text_;
 }
 
+// Both found by fuzz_hlsl: glslang's HLSL front end dereferences a null
+// pointer on them (growGlobalUniformBlock, convertInitializerList).
+TEST_F(BackendBudgetTest, AGlobalDeclaredAgainWithAnotherTypeIsRefusedBeforeGlslang) {
+  TestShader t = inline_shader("float4 unity_Tint; float f(float a) { return a; } float unity_Tint[2];");
+  Diagnostic d = fail(t);
+  EXPECT_EQ(d.message,
+            "'unity_Tint': redefinition with another type (float[2] here, float4 at " + std::string(FACET_TESTDATA_DIR) +
+                "/backend/inline.shader:5); a global has one type")
+      << text_;
+  EXPECT_EQ(where(t, d), "5:8") << text_;
+}
+
+TEST_F(BackendBudgetTest, ADeclarationMissingItsSemicolonBeforeAFunctionIsRead) {
+  TestShader t = inline_shader("float4 _Tint;\nfloat _Tint\nfloat f(float a) { return a; }");
+  Diagnostic d = fail(t);
+  EXPECT_NE(d.message.find("redefinition with another type (float here, float4"), std::string::npos) << text_;
+}
+
+TEST_F(BackendBudgetTest, TwoOperandsInARowInAnArraySizeAreRefusedBeforeGlslang) {
+  TestShader t = inline_shader("float w[t w];\nfloat f(float a) { return a; }");
+  Diagnostic d = fail(t);
+  EXPECT_EQ(d.message, "'w': expected an operator or ']' before this name in an array size") << text_;
+}
+
+TEST_F(BackendBudgetTest, ARedeclarationWithTheSameTypeIsNoProblem) {
+  TestShader t = inline_shader("float4 _Tint; half4 _Tint; cbuffer C { float _Cut; }\nfloat _Cut;\n"
+                               "float f(float a) { return a * _Tint.x * _Cut; }");
+  auto compiled = backend_.compile(t.shader, t.program, Stage::fragment, {}, {}, t.sources, diags_);
+  EXPECT_TRUE(compiled) << render_text(diags_, t.sources);
+}
+
 TEST_F(BackendBudgetTest, LongRunOfMinusIsRefused) {
   TestShader t = inline_shader("float f(float a) { return " + repeat("- ", 100000) + "a; }");
   Diagnostic d = fail(t);

@@ -233,3 +233,40 @@ TEST_F(FacetcTest, AUnityFiveShaderBuildsAsUnityUpgradesIt) {
 
 }  // namespace
 }  // namespace facet::tools::testing
+
+namespace facet::tools::testing {
+namespace {
+
+// fxc compiles only what the entry point reaches; shaders rely on it (a
+// geometry helper calling an overload that only exists with the geometry
+// stage on, a recursive helper no stage calls).
+const char* kUnreachableHelpers = R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+struct VertexIn { float4 vertex : POSITION; };
+float4 Proxy(VertexIn v) { return UnityObjectToClipPos(v.vertex); }
+float4 FromGeometry(float3 p) { return Proxy(p, 2); }
+float Depth(float x) { return x < 1 ? x : Depth(x * 0.5); }
+float4 vert(VertexIn v) : SV_Position { return Proxy(v); }
+float4 frag() : SV_Target { return USED; }
+ENDCG
+} } }
+)";
+
+TEST_F(FacetcTest, FunctionsNoEntryPointReachesAreNotCompiled) {
+  write_all(dir_ / "s.shader", kUnreachableHelpers);
+  FacetcRun run = facetc({"s.shader", "-DUSED=1", "-o", "s.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The same helper reached from the fragment stage is an error at its line.
+  FacetcRun reached = facetc({"s.shader", "-DUSED=FromGeometry(1).x", "-o", "r.facetpkg"});
+  EXPECT_EQ(reached.exit_code, 1);
+  EXPECT_THAT(reached.err, HasSubstr("s.shader:7:"));
+  EXPECT_FALSE(fs::exists(dir_ / "r.facetpkg"));
+  FacetcRun recursive = facetc({"s.shader", "-DUSED=Depth(4)", "-o", "d.facetpkg"});
+  EXPECT_EQ(recursive.exit_code, 1);
+  EXPECT_THAT(recursive.err, HasSubstr("Recursion"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing

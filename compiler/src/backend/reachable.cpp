@@ -1,10 +1,11 @@
 // A coarse split of preprocessed HLSL into top-level items and a call-graph
 // walk from the entry point. It never needs to be exact about the language:
 // anything it cannot split keeps the whole text, which only costs a compile.
-#include "driver/reachable.h"
+#include "backend/reachable.h"
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <vector>
@@ -99,16 +100,17 @@ bool split_items(const std::string& text, std::vector<Item>& items) {
   return true;
 }
 
-}  // namespace
-
-std::string reachable_text(const std::string& tokens, const std::string& entry) {
+// Which items to keep: declarations, and the functions reachable from
+// `entry`; nullopt when the text does not split or has no such function.
+std::optional<std::vector<Item>> split_reached(const std::string& text, const std::string& entry,
+                                               std::vector<bool>& keep) {
   std::vector<Item> items;
-  if (!split_items(tokens, items)) return tokens;
+  if (!split_items(text, items)) return std::nullopt;
   std::map<std::string, std::vector<size_t>> functions;  // name -> items (overloads)
   for (size_t i = 0; i < items.size(); ++i) {
     if (!items[i].function.empty()) functions[items[i].function].push_back(i);
   }
-  if (!functions.count(entry)) return tokens;
+  if (!functions.count(entry)) return std::nullopt;
   // The entry point, and whatever a declaration outside functions names (a
   // static initialiser may call a function).
   std::set<std::string> reached{entry};
@@ -128,9 +130,38 @@ std::string reachable_text(const std::string& tokens, const std::string& entry) 
       }
     }
   }
+  keep.clear();
+  for (const Item& item : items) keep.push_back(item.function.empty() || reached.count(item.function) > 0);
+  return items;
+}
+
+}  // namespace
+
+std::string reachable_text(const std::string& tokens, const std::string& entry) {
+  std::vector<bool> keep;
+  std::optional<std::vector<Item>> items = split_reached(tokens, entry, keep);
+  if (!items) return tokens;
   std::string out;
-  for (const Item& item : items) {
-    if (item.function.empty() || reached.count(item.function)) out.append(tokens, item.begin, item.end - item.begin);
+  for (size_t i = 0; i < items->size(); ++i) {
+    const Item& item = (*items)[i];
+    if (keep[i]) out.append(tokens, item.begin, item.end - item.begin);
+  }
+  return out;
+}
+
+std::string without_unreachable_functions(const std::string& text, const std::string& entry) {
+  std::vector<bool> keep;
+  std::optional<std::vector<Item>> items = split_reached(text, entry, keep);
+  if (!items) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < items->size(); ++i) {
+    const Item& item = (*items)[i];
+    if (keep[i]) {
+      out.append(text, item.begin, item.end - item.begin);
+    } else {
+      out.append(size_t(std::count(text.begin() + long(item.begin), text.begin() + long(item.end), '\n')), '\n');
+    }
   }
   return out;
 }

@@ -1,7 +1,10 @@
-// reachable_text: what an entry point reaches of a preprocessed program.
+// reachable_text and without_unreachable_functions: what an entry point
+// reaches of a preprocessed program.
 #include <gtest/gtest.h>
 
-#include "driver/reachable.h"
+#include <algorithm>
+
+#include "backend/reachable.h"
 
 namespace facet {
 namespace {
@@ -17,7 +20,7 @@ const std::string kProgram =
     "v2f vert(float4 v : POSITION) { v2f o; o.pos = v * helper(); return o; }\n"
     "[earlydepthstencil] float4 frag(v2f i) : SV_Target { return _Color * only_frag(); }\n";
 
-TEST(DriverReachableTest, KeepsDeclarationsAndReachedFunctionsOnly) {
+TEST(ReachableTest, KeepsDeclarationsAndReachedFunctionsOnly) {
   std::string vert = reachable_text(kProgram, "vert");
   EXPECT_NE(vert.find("struct v2f"), std::string::npos);
   EXPECT_NE(vert.find("cbuffer C"), std::string::npos);
@@ -34,22 +37,41 @@ TEST(DriverReachableTest, KeepsDeclarationsAndReachedFunctionsOnly) {
   EXPECT_EQ(frag.find("v2f vert("), std::string::npos);
 }
 
-TEST(DriverReachableTest, ChangesOutsideTheReachedPartDoNotMatter) {
+TEST(ReachableTest, ChangesOutsideTheReachedPartDoNotMatter) {
   std::string other = kProgram;
   other.replace(other.find("return 2;"), 9, "return 3 + _Color.x;");
   EXPECT_EQ(reachable_text(kProgram, "vert"), reachable_text(other, "vert"));
   EXPECT_NE(reachable_text(kProgram, "frag"), reachable_text(other, "frag"));
 }
 
-TEST(DriverReachableTest, StringLiteralsReferenceFunctions) {
+TEST(ReachableTest, StringLiteralsReferenceFunctions) {
   std::string hull = "float4 constants() { return 0; }\n"
                      "[patchconstantfunc(\"constants\")] float4 hs(uint id : SV_OutputControlPointID) { return 1; }\n";
   EXPECT_NE(reachable_text(hull, "hs").find("constants() {"), std::string::npos);
 }
 
-TEST(DriverReachableTest, UnbalancedOrUnknownEntryKeepsEverything) {
+TEST(ReachableTest, UnbalancedOrUnknownEntryKeepsEverything) {
   EXPECT_EQ(reachable_text("float f() { return 1; ", "f"), "float f() { return 1; ");
   EXPECT_EQ(reachable_text(kProgram, "nope"), kProgram);
+}
+
+TEST(ReachableTest, UnreachableFunctionsBecomeEmptyLinesSoLinesStayInPlace) {
+  const std::string text =
+      "#line 1 \"a.shader\"\n"
+      "float4 _Color;\n"
+      "float used() { return 1; }\n"
+      "float unused(float x)\n{\n  return missing(x);\n}\n"
+      "float4 frag() : SV_Target { return _Color * used(); }\n";
+  std::string out = without_unreachable_functions(text, "frag");
+  EXPECT_EQ(out.find("unused"), std::string::npos);
+  EXPECT_EQ(out.find("missing"), std::string::npos);
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
+  auto line_of = [](const std::string& t, const std::string& needle) {
+    return std::count(t.begin(), t.begin() + long(t.find(needle)), '\n');
+  };
+  EXPECT_EQ(line_of(out, "float4 frag()"), line_of(text, "float4 frag()"));
+  EXPECT_NE(out.find("float used() { return 1; }"), std::string::npos);
+  EXPECT_EQ(without_unreachable_functions(text, "nope"), text);
 }
 
 }  // namespace

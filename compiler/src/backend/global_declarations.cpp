@@ -1,0 +1,209 @@
+// A coarse reading of top-level declarations: it only has to find the two
+// forms below in text glslang is about to parse, and says nothing about
+// anything it does not understand.
+#include "backend/global_declarations.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <set>
+#include <vector>
+
+namespace facet::backend {
+namespace {
+
+bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
+bool digit(char c) { return c >= '0' && c <= '9'; }
+
+struct Token {
+  enum Kind { ident, number, punct } kind;
+  std::string_view text;
+  size_t file;  // index into the file names
+  uint32_t line;
+};
+
+struct Tokens {
+  std::vector<Token> list;
+  std::vector<std::string> files{""};
+};
+
+// `#line N "file"`: the next line is line N of that file.
+void read_line_directive(std::string_view line, Tokens& out, size_t& file, uint32_t& next_line) {
+  size_t n = line.find_first_not_of(" \t", 5);
+  if (n == std::string_view::npos || !digit(line[n])) return;
+  uint32_t value = 0;
+  for (; n < line.size() && digit(line[n]); ++n) value = value * 10 + uint32_t(line[n] - '0');
+  next_line = value;
+  size_t open = line.find('"', n), close = open == std::string_view::npos ? open : line.find('"', open + 1);
+  if (close == std::string_view::npos) return;
+  out.files.emplace_back(line.substr(open + 1, close - open - 1));
+  file = out.files.size() - 1;
+}
+
+Tokens tokenize(std::string_view text) {
+  Tokens out;
+  size_t file = 0;
+  uint32_t line = 1;
+  for (size_t begin = 0; begin <= text.size();) {
+    size_t end = std::min(text.find('\n', begin), text.size());
+    std::string_view l = text.substr(begin, end - begin);
+    size_t first = l.find_first_not_of(" \t\r");
+    uint32_t next = line + 1;
+    if (first != std::string_view::npos && l[first] == '#') {
+      if (l.substr(first, 5) == "#line") read_line_directive(l.substr(first), out, file, next);
+    } else {
+      for (size_t i = 0; i < l.size();) {
+        char c = l[i];
+        size_t j = i + 1;
+        Token::Kind kind = Token::punct;
+        if (ident_start(c)) {
+          while (j < l.size() && ident_char(l[j])) ++j;
+          kind = Token::ident;
+        } else if (digit(c) || (c == '.' && j < l.size() && digit(l[j]))) {
+          while (j < l.size() && (ident_char(l[j]) || l[j] == '.')) ++j;
+          kind = Token::number;
+        } else if (c == '"') {
+          j = l.find('"', j);
+          j = j == std::string_view::npos ? l.size() : j + 1;
+        } else if (c == ' ' || c == '\t' || c == '\r') {
+          i = j;
+          continue;
+        }
+        out.list.push_back({kind, l.substr(i, j - i), file, line});
+        i = j;
+      }
+    }
+    line = next;
+    begin = end + 1;
+  }
+  return out;
+}
+
+// half and the min-precision types are float to glslang, matrix and vector
+// their 4-wide forms.
+std::string normalized_type(std::string_view type) {
+  for (std::string_view alias : {"min16float", "min10float", "half"}) {
+    if (type.starts_with(alias)) return "float" + std::string(type.substr(alias.size()));
+  }
+  if (type == "matrix") return "float4x4";
+  if (type == "vector") return "float4";
+  return std::string(type);
+}
+
+const std::set<std::string_view> kSkipped = {"struct", "typedef", "static", "groupshared", "const", "namespace",
+                                             "class", "interface", "cbuffer", "tbuffer", "return"};
+const std::set<std::string_view> kQualifiers = {"uniform", "extern", "row_major", "column_major", "precise",
+                                                "volatile", "shared", "nointerpolation", "linear"};
+
+struct Declared {
+  std::string type;
+  size_t file;
+  uint32_t line;
+};
+
+class Checker {
+ public:
+  explicit Checker(const Tokens& tokens) : t_(tokens) {}
+
+  std::optional<DeclarationProblem> run() {
+    // Statements at the top level, and the members of cbuffer blocks.
+    int depth = 0;
+    bool in_cbuffer = false;
+    size_t start = 0;
+    for (size_t i = 0; i < t_.list.size() && !problem_; ++i) {
+      std::string_view s = t_.list[i].text;
+      if (s == "{") {
+        // What comes before a top-level '{' may end in a declaration whose
+        // ';' is missing ("float X\nfloat4 vert() {").
+        if (depth == 0) statement(start, i);
+        bool cbuffer = depth == 0 && start < i && (t_.list[start].text == "cbuffer" || t_.list[start].text == "tbuffer");
+        if (depth == 0) in_cbuffer = cbuffer;
+        ++depth;
+        start = i + 1;
+      } else if (s == "}") {
+        if (depth > 0) --depth;
+        if (depth == 0) in_cbuffer = false;
+        start = i + 1;
+      } else if (s == ";") {
+        if (depth == 0 || (depth == 1 && in_cbuffer)) statement(start, i);
+        start = i + 1;
+      }
+    }
+    return problem_;
+  }
+
+ private:
+  const Token& at(size_t i) const { return t_.list[i]; }
+
+  void fail(const Token& token, std::string message) {
+    if (!problem_) problem_ = DeclarationProblem{t_.files[token.file], token.line, std::string(token.text), std::move(message)};
+  }
+
+  // [qualifiers] TYPE[<...>] NAME [dims] [: ...] [= init] (, NAME ...)* in [begin, end).
+  void statement(size_t begin, size_t end) {
+    size_t i = begin;
+    if (i >= end || at(i).kind != Token::ident || kSkipped.count(at(i).text)) return;
+    while (i < end && kQualifiers.count(at(i).text)) ++i;
+    if (i >= end || at(i).kind != Token::ident) return;
+    std::string type = normalized_type(at(i).text);
+    ++i;
+    if (i < end && at(i).text == "<") {
+      for (int angle = 0; i < end; ++i) {
+        type += at(i).text;
+        angle += at(i).text == "<" ? 1 : at(i).text == ">" ? -1 : 0;
+        if (angle == 0) break;
+      }
+      ++i;
+    }
+    while (i < end) {
+      if (at(i).kind != Token::ident) return;
+      const Token& name = at(i++);
+      if (i < end && at(i).text == "(") return;  // a function's declaration
+      std::string dims;
+      while (i < end && at(i).text == "[") {
+        size_t close = i + 1;
+        for (int bracket = 1; close < end; ++close) {
+          bracket += at(close).text == "[" ? 1 : at(close).text == "]" ? -1 : 0;
+          if (bracket == 0) break;
+        }
+        for (size_t k = i + 1; k + 1 < close; ++k) {
+          bool operand = at(k).kind != Token::punct;
+          if (operand && at(k + 1).kind == Token::ident) {
+            return fail(at(k + 1), "expected an operator or ']' before this name in an array size");
+          }
+        }
+        for (size_t k = i; k <= close && k < end; ++k) dims += at(k).text;
+        i = close + 1;
+      }
+      declare(name, type + dims);
+      // Past the semantic, register or initializer, to the next declarator.
+      for (int nesting = 0; i < end; ++i) {
+        std::string_view s = at(i).text;
+        nesting += (s == "(" || s == "[" || s == "{") ? 1 : (s == ")" || s == "]" || s == "}") ? -1 : 0;
+        if (nesting == 0 && s == ",") break;
+      }
+      ++i;
+    }
+  }
+
+  void declare(const Token& name, const std::string& type) {
+    auto [it, inserted] = declared_.emplace(std::string(name.text), Declared{type, name.file, name.line});
+    if (inserted || it->second.type == type) return;
+    fail(name, fmt::format("redefinition with another type ({} here, {} at {}:{}); a global has one type", type,
+                           it->second.type, t_.files[it->second.file], it->second.line));
+  }
+
+  const Tokens& t_;
+  std::map<std::string, Declared> declared_;
+  std::optional<DeclarationProblem> problem_;
+};
+
+}  // namespace
+
+std::optional<DeclarationProblem> find_declaration_problem(std::string_view text) {
+  Tokens tokens = tokenize(text);
+  return Checker(tokens).run();
+}
+
+}  // namespace facet::backend

@@ -1,0 +1,29 @@
+// Checks of a preprocessed HLSL program's global declarations before glslang
+// parses it: glslang's HLSL front end (Debian 12's glslang) dereferences a
+// null pointer on two malformed forms fuzzing found, which fxc rejects with
+// an error:
+//   float4 X; float X;    a global uniform declared again with another type
+//   float a[t a];         an array size with two operands in a row
+// Internal to the backend stage.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace facet::backend {
+
+// A problem at a line of the program, as glslang would report it.
+struct DeclarationProblem {
+  std::string file;  // the name of the `#line` in force ("" before any)
+  uint32_t line = 0;
+  std::string token;
+  std::string message;
+};
+
+// The first such problem of `text` (preprocessed: no comments, `#line N
+// "file"` markers), or nullopt.
+std::optional<DeclarationProblem> find_declaration_problem(std::string_view text);
+
+}  // namespace facet::backend

@@ -1,0 +1,27 @@
+// The part of a preprocessed HLSL program one entry point can reach: what
+// glslang compiles (fxc's rule), and what the driver hashes, so that a
+// keyword that only the fragment function tests does not change the vertex
+// stage's key and such programs compile once.
+#pragma once
+
+#include <string>
+
+namespace facet {
+
+// The token text (as the driver's token_text makes it: one logical line per
+// source line, `#line` markers without numbers) reduced to every top-level
+// declaration that is not a function (structs, cbuffers, globals, textures,
+// directives: they shape the module's interface and $Globals layout) plus the
+// functions reachable from `entry` through calls (string literals count as
+// references too, for [patchconstantfunc("f")]). Top-level items keep their
+// order. Text that does not split into balanced items is returned unchanged.
+std::string reachable_text(const std::string& tokens, const std::string& entry);
+
+// The same reduction of a preprocessed program glslang is to compile, fxc's
+// way: fxc compiles only what the entry point reaches, so an unreachable
+// function may call one that does not exist, recurse, or fail to type-check.
+// The functions left out become as many empty lines as they had, so that
+// `#line` positions still hold.
+std::string without_unreachable_functions(const std::string& text, const std::string& entry);
+
+}  // namespace facet
