@@ -171,8 +171,12 @@ glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path,
 glslang::TShader::Includer::IncludeResult* FileIncluder::search(const std::vector<std::string>& dirs,
                                                                  const char* header, const char* includer,
                                                                  bool system) {
+  // "..\CGIncludes\Core.cginc": shaders written on Windows separate with
+  // backslashes, which Unity accepts everywhere.
+  std::string name = header;
+  std::replace(name.begin(), name.end(), '\\', '/');
   for (const std::string& dir : dirs) {
-    fs::path candidate = (dir.empty() ? fs::path(header) : fs::path(dir) / header).lexically_normal();
+    fs::path candidate = (dir.empty() ? fs::path(name) : fs::path(dir) / name).lexically_normal();
     std::error_code size_error;
     if (!fs::is_regular_file(candidate, size_error)) continue;
     // Too large: refused by its size, unread.

@@ -17,11 +17,22 @@ namespace {
 
 std::string number(float f) { return fmt::format("{}", f); }
 
+// The textures the stdlib's built-in blocks declare (FacetBuiltins.hlsl),
+// which a legacy pass may name: "SetTexture [unity_Lightmap]" in Unity's
+// VertexLM passes.
+bool declared_by_the_stdlib(std::string_view name) {
+  static constexpr std::string_view kNames[] = {
+      "unity_Lightmap",        "unity_LightmapInd",           "unity_ShadowMask", "unity_DynamicLightmap",
+      "unity_DynamicDirectionality", "unity_DynamicNormal",   "unity_SpecCube0",  "unity_SpecCube1",
+      "unity_ProbeVolumeSH",   "_LightTexture0"};
+  return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
+}
+
 // Uniforms the generated code reads, each declared once ("float4 _Color;").
 class Uniforms {
  public:
   void add(const std::string& name, std::string_view type) {
-    if (name.empty() || types_.count(name)) return;
+    if (name.empty() || types_.count(name) || declared_by_the_stdlib(name)) return;
     types_[name] = std::string(type);
     order_.push_back(name);
   }

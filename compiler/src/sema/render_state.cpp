@@ -65,9 +65,11 @@ std::optional<ir::StateValue> bool_value(const ast::Value& v, BooleanSpelling sp
   return word;
 }
 
-// "ZTest Off" is Unity's alias of "ZTest Always".
+// "ZTest Off" is Unity's alias of "ZTest Always", "ZTest On" of the default
+// "LEqual".
 std::optional<ir::StateValue> compare_value(const ast::Value& v, std::string_view command, Context& ctx) {
   if (v.kind == ast::Value::Kind::word && iequals(v.text, "Off")) return ir::StateValue{"Always", "", v.span};
+  if (v.kind == ast::Value::Kind::word && iequals(v.text, "On")) return ir::StateValue{"LEqual", "", v.span};
   return word_value(v, kCompare, command, ctx);
 }
 

@@ -267,6 +267,12 @@ void Parser::parse_category(ast::Shader& shader, int parent, const Token& keywor
       parse_category(shader, index, take());
       return true;
     }
+    // Shader-level commands inside a Category apply to the shader, as in
+    // Unity (old shaders put their CustomEditor or Fallback there).
+    if (at_word("CustomEditor") || at_word("Fallback") || at_word("CustomEditorForRenderPipeline") ||
+        at_word("Dependency")) {
+      return parse_shader_item(shader);
+    }
     // Refer to the category by index: nested categories grow the vector.
     ast::Category& cat = shader.categories[size_t(index)];
     if (at_word("LOD")) {

@@ -120,6 +120,14 @@ TEST(FixedFunctionTest, AConstantColorComponentMayBeAFloatProperty) {
   EXPECT_NE(a->hlsl().find("float _AccumOrig;"), std::string::npos);
 }
 
+TEST(FixedFunctionTest, ATextureTheStdlibDeclaresIsNotDeclaredAgain) {
+  // Unity's VertexLM passes: "SetTexture [unity_Lightmap] { matrix [unity_LightmapMatrix] ... }".
+  auto a = ok("SetTexture [unity_Lightmap] { matrix [unity_LightmapMatrix] combine texture }");
+  EXPECT_EQ(a->hlsl().find("sampler2D unity_Lightmap;"), std::string::npos) << a->hlsl();
+  EXPECT_NE(a->hlsl().find("tex2D(unity_Lightmap, i.uv0)"), std::string::npos) << a->hlsl();
+  EXPECT_NE(a->hlsl().find("float4x4 unity_LightmapMatrix;"), std::string::npos);
+}
+
 TEST(FixedFunctionTest, MatrixTransformsTheUVs) {
   auto a = ok("SetTexture [_MainTex] { matrix [_TexMatrix] combine texture }");
   EXPECT_NE(a->hlsl().find("float4x4 _TexMatrix;"), std::string::npos);

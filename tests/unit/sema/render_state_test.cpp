@@ -78,6 +78,8 @@ INSTANTIATE_TEST_SUITE_P(
         CanonicalCase{"conservative_off", "Conservative Off", R"({"Conservative":"False"})"},
         // "ZTest Off" is Unity's alias of Always.
         CanonicalCase{"ztest_off", "ZTest Off", R"({"ZTest":"Always"})"},
+        // "ZTest On" (old shaders): depth testing as by default.
+        CanonicalCase{"ztest_on", "ZTest On", R"({"ZTest":"LEqual"})"},
         CanonicalCase{"conservative", "Conservative TRUE", R"({"Conservative":"True"})"},
         CanonicalCase{"offset", "Offset -1, -1", R"({"Offset":["-1","-1"]})"},
         CanonicalCase{"offset_prop", "Offset [_F], 0.5", R"({"Offset":["[_F]","0.5"]})"},

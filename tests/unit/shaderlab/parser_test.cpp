@@ -370,6 +370,13 @@ TEST(ShaderlabParseTest, IgnoredMetadataCommands) {
   EXPECT_EQ(p->shader->subshaders.at(0).ignored.size(), 1u);
 }
 
+TEST(ShaderlabParseTest, ShaderCommandsInsideACategoryApplyToTheShader) {
+  auto p = parse_ok(R"(Shader "X" { Category { CustomEditor "MyEditor" SubShader { Pass { } } Fallback "Diffuse" } })");
+  EXPECT_EQ(p->shader->custom_editor, "MyEditor");
+  EXPECT_EQ(p->shader->fallback, "Diffuse");
+  EXPECT_EQ(p->shader->subshaders.size(), 1u);
+}
+
 TEST(ShaderlabParseTest, CommentsAnywhere) {
   auto p = parse_ok("// head\nShader /* a */ \"X\" // b\n{ /* { */ SubShader { // }\n Pass { } } }");
   EXPECT_EQ(p->shader->subshaders.at(0).passes.size(), 1u);

@@ -254,6 +254,24 @@ ENDCG
 } } }
 )";
 
+TEST_F(FacetcTest, AnIncludeWrittenWithBackslashesIsFound) {
+  fs::create_directories(dir_ / "CGIncludes");
+  fs::create_directories(dir_ / "Shaders");
+  write_all(dir_ / "CGIncludes" / "Core.cginc", "float4 Tint() { return 1; }\n");
+  write_all(dir_ / "Shaders" / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#include "..\CGIncludes\Core.cginc"
+float4 vert(float4 v : POSITION) : SV_Position { return v; }
+float4 frag() : SV_Target { return Tint(); }
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"Shaders/s.shader", "-o", "s.facetpkg"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
 TEST_F(FacetcTest, FunctionsNoEntryPointReachesAreNotCompiled) {
   write_all(dir_ / "s.shader", kUnreachableHelpers);
   FacetcRun run = facetc({"s.shader", "-DUSED=1", "-o", "s.facetpkg"});
