@@ -90,8 +90,10 @@ inline fixed UnitySpotAttenuate(unityShadowCoord3 LightCoord) { return FacetDist
 #define TRANSFER_VERTEX_TO_FRAGMENT(a) COMPUTE_LIGHT_COORDS(a) TRANSFER_SHADOW(a)
 #define UNITY_TRANSFER_LIGHTING(a, coord) COMPUTE_LIGHT_COORDS(a) UNITY_TRANSFER_SHADOW(a, coord)
 
-// Attenuation at a world position times shadowing, computed in the fragment stage.
+// Attenuation at a world position times shadowing, computed in the fragment
+// stage. The declaration ends in its ';', as Unity's does (shaders call it
+// without one).
 #define UNITY_LIGHT_ATTENUATION(destName, input, worldPos) \
-    float destName = FacetLightAttenuation(worldPos) * UNITY_SHADOW_ATTENUATION(input, worldPos)
+    float destName = FacetLightAttenuation(worldPos) * UNITY_SHADOW_ATTENUATION(input, worldPos);
 
 #endif // AUTOLIGHT_INCLUDED

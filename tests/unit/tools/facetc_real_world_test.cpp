@@ -272,6 +272,37 @@ ENDCG
   EXPECT_EQ(run.exit_code, 0) << run.err;
 }
 
+// Unity's declaring macros end in their own ';', and generated shaders
+// (Amplify Shader Editor's) call them without one.
+TEST_F(FacetcTest, UnitysDeclaringMacrosNeedNoSemicolonAfterThem) {
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+Tags { "LightMode" = "ForwardAdd" }
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+#pragma multi_compile_fwdadd
+#include "UnityCG.cginc"
+#include "AutoLight.cginc"
+UNITY_DECLARE_SCREENSPACE_TEXTURE(_GrabTexture)
+struct v2f { float4 pos : SV_POSITION; float3 worldPos : TEXCOORD0; SHADOW_COORDS(1) };
+v2f vert(appdata_base v) {
+  v2f o;
+  o.pos = UnityObjectToClipPos(v.vertex);
+  o.worldPos = mul(unity_ObjectToWorld, v.vertex).xyz;
+  TRANSFER_SHADOW(o)
+  return o;
+}
+float4 frag(v2f i) : SV_Target {
+  UNITY_LIGHT_ATTENUATION(atten, i, i.worldPos)
+  return atten * UNITY_SAMPLE_SCREENSPACE_TEXTURE(_GrabTexture, i.pos.xy);
+}
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"--check", "--all-variants", "s.shader"});
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+}
+
 TEST_F(FacetcTest, FunctionsNoEntryPointReachesAreNotCompiled) {
   write_all(dir_ / "s.shader", kUnreachableHelpers);
   FacetcRun run = facetc({"s.shader", "-DUSED=1", "-o", "s.facetpkg"});
