@@ -304,7 +304,8 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
       out.parse_log = std::move(preprocessed.parse_log);
       return out;
     }
-    reduced = without_unreachable_functions(without_unity_pragmas(preprocessed.preprocessed), entry);
+    reduced = with_static_initializers_in_entry(
+        without_unreachable_functions(without_unity_pragmas(preprocessed.preprocessed), entry), entry);
     program_text = &reduced;
     if (std::optional<DeclarationProblem> problem = find_declaration_problem(reduced)) {
       std::string file = problem->file.empty() ? source.root_name : problem->file;

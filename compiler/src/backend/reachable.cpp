@@ -166,4 +166,93 @@ std::string without_unreachable_functions(const std::string& text, const std::st
   return out;
 }
 
+// ---- static initialisers that call functions ------------------------------
+
+namespace {
+
+std::string_view trim_view(std::string_view s) {
+  size_t b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return {};
+  return s.substr(b, s.find_last_not_of(" \t\r\n") + 1 - b);
+}
+
+// "static [const] TYPE NAME = INIT;": the '=' and the name, or npos when the
+// item is no such declaration (an array, a list, or no initialiser).
+size_t static_initializer(std::string_view item, std::string& name) {
+  std::string_view t = trim_view(item);
+  if (!t.starts_with("static") || t.size() < 7 || ident_char(t[6])) return std::string_view::npos;
+  int depth = 0;
+  for (size_t i = 0; i < item.size(); ++i) {
+    char c = item[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (c == '[' && depth == 1) return std::string_view::npos;  // an array
+    if (c == ',' && depth == 0) return std::string_view::npos;  // a list
+    if (c == '=' && depth == 0 && (i + 1 >= item.size() || item[i + 1] != '=')) {
+      size_t end = i;
+      while (end > 0 && !ident_char(item[end - 1])) --end;
+      size_t begin = end;
+      while (begin > 0 && ident_char(item[begin - 1])) --begin;
+      name = std::string(item.substr(begin, end - begin));
+      return name.empty() ? std::string_view::npos : i;
+    }
+  }
+  return std::string_view::npos;
+}
+
+}  // namespace
+
+std::string with_static_initializers_in_entry(const std::string& text, const std::string& entry) {
+  std::vector<Item> items;
+  if (!split_items(text, items)) return text;
+  std::set<std::string> functions;
+  const Item* entry_item = nullptr;
+  for (const Item& item : items) {
+    if (item.function.empty()) continue;
+    functions.insert(item.function);
+    if (item.function == entry && !entry_item) entry_item = &item;
+  }
+  if (!entry_item) return text;
+  std::string out = text;
+  std::string assignments;
+  for (const Item& item : items) {
+    if (!item.function.empty()) continue;
+    bool calls = std::any_of(item.names.begin(), item.names.end(),
+                             [&](const std::string& n) { return functions.count(n) > 0; });
+    std::string name;
+    std::string_view view(text.data() + item.begin, item.end - item.begin);
+    size_t equals = calls ? static_initializer(view, name) : std::string_view::npos;
+    if (equals == std::string_view::npos) continue;
+    size_t semicolon = view.rfind(';');
+    if (semicolon == std::string_view::npos || semicolon < equals) continue;
+    std::string init(view.substr(equals + 1, semicolon - equals - 1));
+    std::replace(init.begin(), init.end(), '\n', ' ');
+    assignments += " " + name + " =" + init + ";";
+    // "static [const] TYPE NAME" stays, without const; the initialiser
+    // becomes blanks (its line breaks kept).
+    std::string head(view.substr(0, equals));
+    if (size_t c = head.find("const"); c != std::string::npos && (c + 5 >= head.size() || !ident_char(head[c + 5])) &&
+                                        (c == 0 || !ident_char(head[c - 1]))) {
+      head.replace(c, 5, "     ");
+    }
+    std::string replaced = head + ";";
+    for (size_t k = equals; k < view.size(); ++k) replaced += view[k] == '\n' ? '\n' : ' ';
+    replaced.resize(view.size(), ' ');
+    out.replace(item.begin, item.end - item.begin, replaced);
+  }
+  if (assignments.empty()) return text;
+  // After the '{' that opens the entry point's body, on its line.
+  int parens = 0;
+  for (size_t i = entry_item->begin; i < entry_item->end; ++i) {
+    char c = text[i];
+    if (c == '(') ++parens;
+    if (c == ')') --parens;
+    if (c == '{' && parens == 0) {
+      out.insert(i + 1, assignments);
+      return out;
+    }
+  }
+  return text;
+}
+
 }  // namespace facet

@@ -24,4 +24,12 @@ std::string reachable_text(const std::string& tokens, const std::string& entry);
 // `#line` positions still hold.
 std::string without_unreachable_functions(const std::string& text, const std::string& entry);
 
+// glslang reports "Recursion detected" for any static global whose
+// initialiser calls a function of the program; fxc runs such initialisers at
+// the start of each invocation. So each "static [const] TYPE NAME = INIT;"
+// that calls one becomes "static TYPE NAME;" (the initialiser blanked, lines
+// kept), and "NAME = INIT;" is run first in `entry`'s body, in declaration
+// order, on the line of its '{'. Text without `entry` is returned unchanged.
+std::string with_static_initializers_in_entry(const std::string& text, const std::string& entry);
+
 }  // namespace facet

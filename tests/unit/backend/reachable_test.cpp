@@ -74,5 +74,21 @@ TEST(ReachableTest, UnreachableFunctionsBecomeEmptyLinesSoLinesStayInPlace) {
   EXPECT_EQ(without_unreachable_functions(text, "nope"), text);
 }
 
+TEST(ReachableTest, StaticInitialisersThatCallFunctionsRunFirstInTheEntryPoint) {
+  const std::string text =
+      "float f(float x) { return x; }\n"
+      "static const float A = f(1);\n"
+      "static float B = A +\n  f(2);\n"
+      "static const float C = 3;\n"
+      "float4 frag() : SV_Target {\n  return A + B + C;\n}\n";
+  std::string out = with_static_initializers_in_entry(text, "frag");
+  EXPECT_NE(out.find("static       float A ;"), std::string::npos) << out;
+  EXPECT_NE(out.find("static float B ;"), std::string::npos) << out;
+  EXPECT_NE(out.find("static const float C = 3;"), std::string::npos) << "no call: stays";
+  EXPECT_NE(out.find("float4 frag() : SV_Target { A = f(1); B = A +   f(2);\n"), std::string::npos) << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
+  EXPECT_EQ(with_static_initializers_in_entry(text, "vert"), text);
+}
+
 }  // namespace
 }  // namespace facet
