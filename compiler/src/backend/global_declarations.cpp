@@ -111,8 +111,24 @@ class Checker {
     int depth = 0;
     bool in_cbuffer = false;
     size_t start = 0;
+    std::vector<size_t> open;  // the brackets open, innermost last
     for (size_t i = 0; i < t_.list.size() && !problem_; ++i) {
       std::string_view s = t_.list[i].text;
+      if (s == "(" || s == "[" || s == "{") open.push_back(i);
+      if (s == ")" || s == "]" || s == "}") {
+        static constexpr std::string_view kOpener[] = {"(", "[", "{"};
+        std::string_view want = kOpener[s == ")" ? 0 : s == "]" ? 1 : 2];
+        if (open.empty() || at(open.back()).text != want) {
+          if (!open.empty()) {
+            fail(at(i), fmt::format("'{}' does not close the '{}' at line {}", s, at(open.back()).text,
+                                    at(open.back()).line));
+          } else {
+            fail(at(i), fmt::format("'{}' closes nothing", s));
+          }
+          break;
+        }
+        open.pop_back();
+      }
       if (s == "{") {
         // What comes before a top-level '{' may end in a declaration whose
         // ';' is missing ("float X\nfloat4 vert() {").
@@ -143,7 +159,12 @@ class Checker {
   // [qualifiers] TYPE[<...>] NAME [dims] [: ...] [= init] (, NAME ...)* in [begin, end).
   void statement(size_t begin, size_t end) {
     size_t i = begin;
-    if (i >= end || at(i).kind != Token::ident || kSkipped.count(at(i).text)) return;
+    if (i >= end || at(i).kind != Token::ident) return;
+    // A static or const global may be declared again (glslang reports that
+    // cleanly), but its array sizes are read as any other.
+    bool local = at(i).text == "static" || at(i).text == "const";
+    while (i < end && (at(i).text == "static" || at(i).text == "const")) ++i;
+    if (i >= end || kSkipped.count(at(i).text)) return;
     while (i < end && kQualifiers.count(at(i).text)) ++i;
     if (i >= end || at(i).kind != Token::ident) return;
     std::string type = normalized_type(at(i).text);
@@ -159,7 +180,17 @@ class Checker {
     while (i < end) {
       if (at(i).kind != Token::ident) return;
       const Token& name = at(i++);
-      if (i < end && at(i).text == "(") return;  // a function's declaration
+      if (i < end && at(i).text == "(") {
+        // A function's declaration; glslang reads a name after its ')' as
+        // another declarator of the type ("float4 f(v2f i) X;").
+        for (int paren = 0; i < end; ++i) {
+          paren += at(i).text == "(" ? 1 : at(i).text == ")" ? -1 : 0;
+          if (paren == 0) break;
+        }
+        ++i;
+        if (i < end && at(i).kind == Token::ident) continue;
+        return;
+      }
       std::string dims;
       while (i < end && at(i).text == "[") {
         size_t close = i + 1;
@@ -176,7 +207,8 @@ class Checker {
         for (size_t k = i; k <= close && k < end; ++k) dims += at(k).text;
         i = close + 1;
       }
-      declare(name, type + dims);
+      if (!local) declare(name, type + dims);
+      if (i < end && at(i).kind == Token::ident) continue;  // "float X Y;": glslang reads Y as a declarator too
       // Past the semantic, register or initializer, to the next declarator.
       for (int nesting = 0; i < end; ++i) {
         std::string_view s = at(i).text;

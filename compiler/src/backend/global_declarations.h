@@ -1,9 +1,11 @@
-// Checks of a preprocessed HLSL program's global declarations before glslang
-// parses it: glslang's HLSL front end (Debian 12's glslang) dereferences a
-// null pointer on two malformed forms fuzzing found, which fxc rejects with
-// an error:
+// Checks of a preprocessed HLSL program before glslang parses it: glslang's
+// HLSL front end (Debian 12's glslang) dereferences a null pointer on
+// malformed forms fuzzing found, which fxc rejects with an error:
 //   float4 X; float X;    a global uniform declared again with another type
+//                         (also "float4 f(v2f i) X;": glslang reads X as a
+//                         declarator of float4)
 //   float a[t a];         an array size with two operands in a row
+//   float w[N * k);       a bracket closed by the wrong one
 // Internal to the backend stage.
 #pragma once
 

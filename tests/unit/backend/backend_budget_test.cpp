@@ -105,6 +105,19 @@ TEST_F(BackendBudgetTest, TwoOperandsInARowInAnArraySizeAreRefusedBeforeGlslang)
   EXPECT_EQ(d.message, "'w': expected an operator or ']' before this name in an array size") << text_;
 }
 
+TEST_F(BackendBudgetTest, ANameAfterAFunctionsDeclarationIsReadAsADeclarator) {
+  TestShader t = inline_shader("float4x4 unity_VP;\nfloat4 g(float4 i) unity_VP;\nfloat f(float a) { return a; }");
+  Diagnostic d = fail(t);
+  EXPECT_NE(d.message.find("redefinition with another type (float4 here, float4x4"), std::string::npos) << text_;
+  EXPECT_EQ(where(t, d), "6:20") << text_;
+}
+
+TEST_F(BackendBudgetTest, ABracketClosedByTheWrongOneIsRefusedBeforeGlslang) {
+  TestShader t = inline_shader("static const float w[N * k) * w[k];\nfloat f(float a) { return a; }");
+  Diagnostic d = fail(t);
+  EXPECT_EQ(d.message, "')': ')' does not close the '[' at line 5") << text_;
+}
+
 TEST_F(BackendBudgetTest, ARedeclarationWithTheSameTypeIsNoProblem) {
   TestShader t = inline_shader("float4 _Tint; half4 _Tint; cbuffer C { float _Cut; }\nfloat _Cut;\n"
                                "float f(float a) { return a * _Tint.x * _Cut; }");
@@ -259,7 +272,7 @@ TEST_F(BackendBudgetTest, IncludeOverTheFileCapIsRefusedUnread) {
   Diagnostic d = fail(t);
   fs::remove_all(dir);
   EXPECT_EQ(d.message, "'huge.h' is larger than 64 MiB (104857600 bytes)") << text_;
-  EXPECT_EQ(where(t, d), "5:10") << text_;
+  EXPECT_EQ(where(t, d), "6:20") << text_;
 }
 
 TEST_F(BackendBudgetTest, HazardInAnIncludedFileIsLocatedThere) {
