@@ -272,7 +272,7 @@ TEST_F(BackendBudgetTest, IncludeOverTheFileCapIsRefusedUnread) {
   Diagnostic d = fail(t);
   fs::remove_all(dir);
   EXPECT_EQ(d.message, "'huge.h' is larger than 64 MiB (104857600 bytes)") << text_;
-  EXPECT_EQ(where(t, d), "6:20") << text_;
+  EXPECT_EQ(where(t, d), "5:10") << text_;
 }
 
 TEST_F(BackendBudgetTest, HazardInAnIncludedFileIsLocatedThere) {
