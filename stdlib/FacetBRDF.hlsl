@@ -18,7 +18,7 @@
 #endif
 #define FACET_INV_PI 0.31830988618379067154
 
-// Clamps (pbr-numerics.md §1.2, §2.2).
+// Clamps (docs/lighting-models.md, docs/stability.md "The models").
 #define FACET_MIN_NOV 1e-4                    // ~0.0057 degrees of bias at grazing views
 #define FACET_MIN_PERCEPTUAL_ROUGHNESS 0.045  // fp32: alpha = 0.002025
 #define FACET_MIN_ALPHA 0.002025

@@ -1,4 +1,4 @@
-// The fp16 mode (T3/T4, pbr-numerics.md §7): the GGX D, V and F forms in true
+// The fp16 mode (T3/T4, docs/stability.md "fp16"): the GGX D, V and F forms in true
 // half arithmetic, on the CPU (GCC _Float16, facet/reference/fp16/) and on the
 // GPU (an emulation that rounds every operation to half with f32tof16, since
 // the runtime context enables no 16-bit arithmetic), plus the stdlib compiled

@@ -4,7 +4,7 @@
 // by one pass, evaluated on the GPU, and summed by a second pass). F = 1
 // (f0 = 1, metallic 1 for Unity's tiers) and albedo 1. Conserving models
 // stay <= 1 + quadrature tolerance; violators exceed 1 by their documented
-// (pbr-numerics.md §7) or, where none is documented, measured amount; the
+// (docs/stability.md) or, where none is documented, measured amount; the
 // energy-compensated GGX is 1 +- 1 %.
 #include <gtest/gtest.h>
 
@@ -35,7 +35,7 @@ struct Setting {
   double f0;
   double expected_max;  // of E over the view cosines
   double tolerance;
-  std::string source;  // "documented" (pbr-numerics.md §7) or "measured"
+  std::string source;  // "documented" (docs/stability.md) or "measured"
 };
 
 // E(v) over kViewCosines for one setting; `energy(c)` feeds x[12] (E of the

@@ -1,4 +1,4 @@
-// The input sets of T1/T2 (pbr-numerics.md §13.2): the hard-case grid and the
+// The input sets of T1/T2 (docs/stability.md): the hard-case grid and the
 // full input set, as evaluator points (models.h layout).
 #pragma once
 

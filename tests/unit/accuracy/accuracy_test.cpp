@@ -1,5 +1,5 @@
 // The accuracy-versus-cost study: its errors agree with the measured anchors
-// of pbr-numerics.md section 7, every row compiles and is counted, the GPU
+// of docs/accuracy.md ("Agreement with the measured anchors"), every row compiles and is counted, the GPU
 // pass times every row on lavapipe, and the reports hold what they claim.
 #include <gtest/gtest.h>
 
@@ -38,7 +38,7 @@ TEST(AccuracyStudyTest, HasAtLeast25RowsWithAnError) {
   }
 }
 
-// Each anchor of pbr-numerics.md section 7 that the study reproduces, with
+// Each anchor of docs/accuracy.md that the study reproduces, with
 // the tolerance its quadrature or grid allows (docs/accuracy.md).
 TEST(AccuracyStudyTest, ErrorsAgreeWithTheMeasuredAnchors) {
   struct Anchor {

@@ -1,4 +1,4 @@
-// Every include file and built-in name of SPEC.md §5 is provided by stdlib/:
+// Every include file and built-in name of docs/stdlib.md §8 is provided by stdlib/:
 // one shader uses all of them (each in a way that fails to compile when the
 // name is missing); when it fails, each name is compiled alone so that the
 // failure names the missing ones.
@@ -33,7 +33,7 @@ Use uniform(const std::string& name) { return {name, "", "", "", "acc.xyz += " +
 Use matrix(const std::string& name) { return {name, "", "", "", "acc += mul(" + name + ", float4(i.wp, 1));"}; }
 Use frag(const std::string& name, const std::string& code) { return {name, "", "", "", "{ " + code + " }"}; }
 
-// SPEC.md §5, in its order.
+// docs/stdlib.md §8, in its order.
 std::vector<Use> builtin_uses() {
   std::vector<Use> u;
   for (const char* m : {"unity_ObjectToWorld", "unity_WorldToObject", "UNITY_MATRIX_M", "UNITY_MATRIX_V",
@@ -205,7 +205,7 @@ TEST(StdlibNamesTest, EveryBuiltinNameOfSpecSection5IsProvided) {
     all.push_back(&u);
     by_name[u.name] = &u;
   }
-  EXPECT_EQ(uses.size(), 108u) << "the SPEC.md §5 list changed size";
+  EXPECT_EQ(uses.size(), 108u) << "the docs/stdlib.md §8 list changed size";
   EXPECT_EQ(by_name.size(), uses.size()) << "names are listed once";
   auto compiled = compile_text("names.shader", names_shader(all));
   if (compiled.ok) {
@@ -457,7 +457,7 @@ ENDCG
   }
 }
 
-// Indirect light belongs to ForwardBase only (SPEC.md §4).
+// Indirect light belongs to ForwardBase only (docs/rendering.md).
 TEST(StdlibNamesTest, ApplyIndirectIsDefinedOnlyInForwardBase) {
   const std::pair<const char*, bool> passes[] = {{"UNITY_PASS_FORWARDBASE", true},
                                                  {"UNITY_PASS_FORWARDADD", false},

@@ -1,4 +1,4 @@
-// T6/T7 white-furnace tests (pbr-numerics.md §13.2): the directional albedo
+// T6/T7 white-furnace tests (docs/stability.md): the directional albedo
 // E(v) = integral of f(v, l) <n.l> dl with F = 1 / albedo 1, over a grid of
 // view angles. Energy-conserving models must stay <= 1 (+ quadrature
 // tolerance); the known violators must exceed 1 by their documented amount.
@@ -44,7 +44,7 @@ FacetAngles angles(const glm::dvec3& v, const glm::dvec3& l) { return FacetCompu
 struct FurnaceCase {
   std::string name;
   Brdf f;
-  double expected_max;  // documented (pbr-numerics.md §7) or, where it gives none, measured here
+  double expected_max;  // documented (docs/stability.md) or, where it gives none, measured here
   double tolerance;
 };
 

@@ -1,4 +1,4 @@
-// T1/T2: every assembled model on the hard-case grid of pbr-numerics.md §13.2
+// T1/T2: every assembled model on the hard-case grid of docs/stability.md
 // (grazing and back-facing NoV/NoL, L = -V, L = V = N, NoH = 1, roughness 0
 // and 1, f0 0 and 1, unnormalised and zero-length normals, denormals, light
 // intensities 0 / 65504 / 1e6): finite, non-negative, representable in fp32,

@@ -42,7 +42,7 @@ TEST(ReferenceIblTest, DfgTableIsBoundedAndAgreesWithDirectQuadrature) {
   }
 }
 
-// pbr-numerics.md §3: EnvBRDFApprox gives A = 0.452 at r = 1, NoV = 1 where the
+// docs/lighting-models.md: EnvBRDFApprox gives A = 0.452 at r = 1, NoV = 1 where the
 // table has 0.307 (+47 %), and |dA| <= 0.40 over the table.
 TEST(ReferenceIblTest, EnvBRDFApproxErrorMatchesItsDocumentedBudget) {
   glm::dvec2 ab = FacetEnvBRDFApproxAB(1.0, 1.0);

@@ -75,7 +75,7 @@ TEST(ReferenceMicrofacetTest, FP16SafeGGXEqualsThePlainFormBelowItsClamp) {
   }
 }
 
-// pbr-numerics.md §5: Hammon's V is exact at alpha = 1 and off by at most
+// docs/lighting-models.md: Hammon's V is exact at alpha = 1 and off by at most
 // 27.5 % (alpha = 0.05) elsewhere.
 TEST(ReferenceMicrofacetTest, HammonFastVisibilityStaysWithinItsDocumentedError) {
   const std::pair<double, double> documented[] = {{0.05, 0.275}, {0.2, 0.225}, {0.5, 0.134}, {1.0, 0.0}};

@@ -87,7 +87,7 @@ TEST(ReferenceReciprocityTest, ModelsThatClaimReciprocityAreReciprocal) {
   for (const auto& [name, f] : reciprocal_models()) EXPECT_LE(asymmetry(f), 1e-6) << name;
 }
 
-// Whitelisted (pbr-numerics.md T5): the compensation factor depends on v
+// Whitelisted (docs/stability.md, T5): the compensation factor depends on v
 // alone, translucency treats l and v differently by construction.
 TEST(ReferenceReciprocityTest, EnergyCompensationAndTranslucencyAreNotReciprocal) {
   Brdf compensated = [](const glm::dvec3& v, const glm::dvec3& l) {

@@ -1,4 +1,4 @@
-// T18 of pbr-numerics.md, rendered: a sphere grid (smoothness x metallic) of
+// T18 of docs/stability.md ("Rendered furnace"), rendered: a sphere grid (smoothness x metallic) of
 // the Standard surface shader in a uniform white environment (ambient 1, no
 // lights), and a plane seen at a grazing angle, scanned for NaN/Inf and for
 // light beyond the environment's by more than the Standard model's known

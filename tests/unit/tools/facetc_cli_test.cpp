@@ -158,7 +158,7 @@ TEST_F(FacetcTest, DepfilesListEveryIncludedFile) {
 }
 
 TEST_F(FacetcTest, WerrorTurnsWarningsIntoFailures) {
-  // A SubShader-level LightMode is a warning with a fix (SPEC.md §1).
+  // A SubShader-level LightMode is a warning with a fix (docs/language.md).
   write_all(dir_ / "warn.shader", R"(Shader "T/Warn" {
   SubShader {
     Tags { "LightMode"="ForwardBase" }

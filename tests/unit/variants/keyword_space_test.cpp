@@ -1,4 +1,4 @@
-// build_keyword_space: every pragma rule of SPEC.md §3 / docs/variants.md.
+// build_keyword_space: every pragma rule of docs/variants.md.
 #include <gtest/gtest.h>
 
 #include <sstream>

@@ -25,7 +25,7 @@ struct StudyRow {
   std::string metric;     // what `error` is
   double error = 0;       // the headline error (0 for reference rows)
   std::string detail;     // further numbers
-  std::string anchor;     // the measured anchor of pbr-numerics.md section 7, "" when none
+  std::string anchor;     // the measured anchor (docs/accuracy.md, "Agreement with the measured anchors"), "" when none
   uint32_t spirv_instructions = 0;    // one evaluation, after spirv-opt, minus the null kernel
   std::optional<double> ns_per_eval;  // GPU time per evaluation, minus the null pass
 };

@@ -1,7 +1,7 @@
 // Templated twins of the GGX D, V and F terms of stdlib/FacetBRDF.hlsl, to be
 // run in GCC's _Float16 (true IEEE half arithmetic: every + - * / and sqrt
 // rounds to half) and, for comparison, in float and double. They predict what
-// a real half-precision ALU does with each form (pbr-numerics.md §7, T3/T4);
+// a real half-precision ALU does with each form (docs/stability.md, "fp16");
 // a GPU that keeps RelaxedPrecision at fp32 (lavapipe) does not show it.
 //
 // The operations are written in the HLSL order, so that rounding and overflow
