@@ -1,4 +1,5 @@
-# Debian 12's CMake configs have ordering traps; see DESIGN.md.
+# The order matters with Debian 12's CMake configs: glslang's uses Threads::Threads
+# without finding Threads, and SPIRV-Tools-opt's needs SPIRV-Tools' targets first.
 find_package(Threads REQUIRED)
 find_package(glslang REQUIRED)
 find_package(SPIRV-Tools REQUIRED)

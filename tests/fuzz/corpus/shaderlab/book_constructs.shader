@@ -1,5 +1,5 @@
 // The ShaderLab constructs of "Physically Based Shader Development for Unity
-// 2017" (shared/reference/book-inventory.md a.1-a.11) in one file.
+// 2017" in one file.
 Shader "Custom/CustomStandardShader"
 {
     Properties
