@@ -9,6 +9,7 @@ namespace facet::backend {
 namespace {
 
 constexpr std::string_view kNoOverload = "no matching overloaded function found";
+constexpr std::string_view kSwitchNotInteger = "condition must be a scalar integer expression";
 
 bool is_ident(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
@@ -219,6 +220,40 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
     }
   }
   return out;
+}
+
+size_t cast_float_switches(ir::Program& program, const std::string& root_name, const std::vector<LogMessage>& messages) {
+  std::vector<ir::SourceChunk*> chunks;
+  for (ir::SourceChunk& c : program.includes) chunks.push_back(&c);
+  chunks.push_back(&program.body);
+  size_t cast = 0;
+  std::set<std::pair<std::string, uint32_t>> done;
+  for (const LogMessage& m : messages) {
+    if (m.severity != Severity::error || m.token != "switch" || m.text.find(kSwitchNotInteger) == std::string::npos) {
+      continue;
+    }
+    if (!done.insert({m.file, m.line}).second) continue;
+    for (ir::SourceChunk* chunk : chunks) {
+      bool same_file = chunk->line_file.empty() ? m.file == root_name : m.file == chunk->line_file;
+      if (!same_file || m.line < chunk->first_line || m.line >= chunk->first_line + line_count(chunk->text)) continue;
+      std::string& text = chunk->text;
+      size_t from = line_start(text, m.line - chunk->first_line);
+      size_t end = from == std::string::npos ? from : text.find('\n', from);
+      if (end == std::string::npos) end = text.size();
+      for (size_t at = text.find("switch", from); at != std::string::npos && at < end; at = text.find("switch", at + 1)) {
+        if (!is_word_at(text, at, "switch")) continue;
+        size_t open = skip_space(text, at + 6);
+        size_t close = open < text.size() && text[open] == '(' ? matching_paren(text, open) : std::string::npos;
+        if (close == std::string::npos) break;
+        text.insert(close, ")");
+        text.insert(open + 1, "(int)(");
+        ++cast;
+        break;
+      }
+      break;
+    }
+  }
+  return cast;
 }
 
 std::vector<CastCall> cast_rejected_calls_in_includes(std::map<std::string, std::string>& texts,

@@ -30,6 +30,11 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
                                           const std::vector<LogMessage>& messages,
                                           const std::map<std::string, std::string>& included);
 
+// fxc switches on a float (converted to int); glslang wants an integer. Each
+// "switch (x)" in `program`'s chunks on a line that `messages` reports so
+// becomes "switch ((int)(x))"; returns how many were rewritten.
+size_t cast_float_switches(ir::Program& program, const std::string& root_name, const std::vector<LogMessage>& messages);
+
 // The same for calls in included files: `texts` holds each file's text by
 // the path glslang names (edited in place; a file not yet in it is read
 // from `current`); definitions are looked up in those texts and `program`.

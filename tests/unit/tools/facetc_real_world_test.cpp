@@ -305,6 +305,25 @@ ENDCG
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
 }
 
+TEST_F(FacetcTest, ASwitchOnAFloatIsASwitchOnItsIntegerPart) {
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+float _Shape;
+float4 vert(float4 v : POSITION) : SV_Position { return v; }
+float4 frag() : SV_Target {
+  switch (_Shape * 2) { case 0: return 1; case 1: return 0.5; default: return 0; }
+}
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"s.shader", "-o", "s.facetpkg"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  FacetcRun e = facetc({"s.shader", "-E"});
+  EXPECT_THAT(e.out, HasSubstr("switch(_Shape * 2)")) << "-E shows the program as written, uncast";
+}
+
 TEST_F(FacetcTest, FunctionsNoEntryPointReachesAreNotCompiled) {
   write_all(dir_ / "s.shader", kUnreachableHelpers);
   FacetcRun run = facetc({"s.shader", "-DUSED=1", "-o", "s.facetpkg"});
