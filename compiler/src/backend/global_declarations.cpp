@@ -146,6 +146,9 @@ class Checker {
         start = i + 1;
       }
     }
+    // The end of the text ends the last statement, and must close every bracket.
+    if (!problem_ && depth == 0) statement(start, t_.list.size());
+    if (!problem_ && !open.empty()) fail(at(open.back()), fmt::format("'{}' is never closed", at(open.back()).text));
     return problem_;
   }
 

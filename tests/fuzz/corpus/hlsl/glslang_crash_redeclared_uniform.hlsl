@@ -1,0 +1,1 @@
+float4 unity_MatrixVP;float unity_MatrixVP

@@ -1,0 +1,43 @@
+// find_declaration_problem on preprocessed text: what it refuses and where.
+#include "backend/global_declarations.h"
+
+#include <gtest/gtest.h>
+
+namespace facet::backend {
+namespace {
+
+TEST(GlobalDeclarationsTest, PositionsFollowLineDirectives) {
+  auto p = find_declaration_problem("#line 7 \"a.shader\"\nfloat4 X;\n#line 40 \"b.cginc\"\n\nfloat X;\n");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->file, "b.cginc");
+  EXPECT_EQ(p->line, 41u);
+  EXPECT_EQ(p->token, "X");
+  EXPECT_EQ(p->message, "redefinition with another type (float here, float4 at a.shader:7); a global has one type");
+}
+
+TEST(GlobalDeclarationsTest, TheEndOfTheTextEndsADeclarationAndMustCloseItsBrackets) {
+  // fuzz_hlsl's wrapper has nothing after the program: "float w[t w" at the end.
+  auto last = find_declaration_problem("float f() { return 1; }\nfloat w[t w");
+  ASSERT_TRUE(last);
+  EXPECT_EQ(last->message, "expected an operator or ']' before this name in an array size");
+  EXPECT_EQ(last->line, 2u);
+  auto open = find_declaration_problem("float f() { return (1; }");
+  ASSERT_TRUE(open);
+  EXPECT_EQ(open->message, "'}' does not close the '(' at line 1");
+  auto never = find_declaration_problem("float f() { return 1;");
+  ASSERT_TRUE(never);
+  EXPECT_EQ(never->message, "'{' is never closed");
+}
+
+TEST(GlobalDeclarationsTest, WhatGlslangTakesIsNoProblem) {
+  for (const char* ok : {"float4 X; float4 X;", "half4 X; float4 X;", "static float X; static float X;",
+                         "struct S { float4 X; }; float X;", "Texture2D<float4> T; SamplerState s;",
+                         "cbuffer C : register(b0) { float4 A; } float4 A;", "float a[2] = {1, 2};",
+                         "float4 f(float4 p : POSITION) : SV_Position { float X = 1; return p * X; } float4 X;",
+                         "[numthreads(8, 8, 1)] void cs(uint3 id : SV_DispatchThreadID) {}"}) {
+    EXPECT_FALSE(find_declaration_problem(ok)) << ok;
+  }
+}
+
+}  // namespace
+}  // namespace facet::backend
