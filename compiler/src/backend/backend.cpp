@@ -347,8 +347,10 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
   result.stage = stage;
   result.spirv = std::move(out.spirv);
   result.included_files = included_paths(*includer);
-  if (!check_generated(result.spirv, is_hlsl(program), options.target, diags)) return failure("glslang bug");
+  // The word-level fix-ups come first: one of them lists interface variables
+  // glslang leaves out, without which the module is invalid.
   report_overlaps(fix_up_spirv(result.spirv, out.declared, stage, is_hlsl(program)), program, stage, diags);
+  if (!check_generated(result.spirv, is_hlsl(program), options.target, diags)) return failure("glslang bug");
   if (!check_unroll(result.spirv, program, options, diags)) return failure("input limit");
   if (is_hlsl(program) && !legalize_hlsl(result.spirv, options.target, diags)) return failure("legalization failed");
   if (!optimize(result.spirv, options.opt, options.target, diags)) return failure("spirv-opt failed");

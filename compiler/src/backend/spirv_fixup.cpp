@@ -280,6 +280,41 @@ std::vector<std::pair<std::string, uint32_t>> material_bindings(const std::vecto
   return out;
 }
 
+// glslang leaves an Input or Output variable of an empty struct (an HLSL
+// stage input with no members) out of the entry point's interface, which
+// SPIR-V requires it to be in, and without the Location Vulkan requires;
+// every Input/Output variable is listed, and an empty struct one gets
+// Location 0 (it occupies no location).
+void list_interface_variables(std::vector<Instruction>& insts, const ModuleIndex& ix) {
+  std::vector<Instruction> locations;
+  for (uint32_t id : ix.variable_order) {
+    auto [pointer, sc] = ix.variables.at(id);
+    if ((sc != spv::StorageClassInput && sc != spv::StorageClassOutput) || ix.location_inst.count(id)) continue;
+    auto pointee = ix.pointees.find(pointer);
+    auto type = pointee == ix.pointees.end() ? ix.types.end() : ix.types.find(pointee->second);
+    // A geometry or tessellation stage's input is an array of them.
+    while (type != ix.types.end() && opcode(type->second) == spv::OpTypeArray && type->second.size() > 2) {
+      type = ix.types.find(type->second[2]);
+    }
+    if (type == ix.types.end() || opcode(type->second) != spv::OpTypeStruct || type->second.size() != 2) continue;
+    locations.push_back({(4u << 16) | spv::OpDecorate, id, uint32_t(spv::DecorationLocation), 0u});
+  }
+  if (!locations.empty()) {
+    auto first = std::find_if(insts.begin(), insts.end(), [](const Instruction& i) { return opcode(i) == spv::OpDecorate; });
+    insts.insert(first, locations.begin(), locations.end());
+  }
+  for (Instruction& inst : insts) {
+    if (opcode(inst) != spv::OpEntryPoint || inst.size() < 4) continue;
+    size_t first = 3 + (decode_string(inst, 3).size() + 4) / 4;  // after the name's words
+    std::set<uint32_t> listed(inst.begin() + long(std::min(first, inst.size())), inst.end());
+    for (uint32_t id : ix.variable_order) {
+      spv::StorageClass sc = ix.variables.at(id).second;
+      if ((sc == spv::StorageClassInput || sc == spv::StorageClassOutput) && !listed.count(id)) inst.push_back(id);
+    }
+    inst[0] = (uint32_t(inst.size()) << 16) | spv::OpEntryPoint;
+  }
+}
+
 FixupReport fix_up_spirv(std::vector<uint32_t>& spirv, const std::vector<DeclaredResource>& declared, Stage stage,
                          bool hlsl) {
   FixupReport report;
@@ -293,6 +328,7 @@ FixupReport fix_up_spirv(std::vector<uint32_t>& spirv, const std::vector<Declare
   }
   assign_material_bindings(insts, ix, declared);
   if (hlsl) assign_semantic_locations(insts, ix, stage, report);
+  list_interface_variables(insts, ix);
   spirv = join(spirv, insts);
   return report;
 }

@@ -324,6 +324,25 @@ ENDCG
   EXPECT_THAT(e.out, HasSubstr("switch(_Shape * 2)")) << "-E shows the program as written, uncast";
 }
 
+// A stage input or output with no members (a shader that only discards):
+// glslang leaves it out of the entry point's interface and without a
+// Location; the module facet writes is valid for Vulkan all the same.
+TEST_F(FacetcTest, EmptyStageStructsGiveValidSpirv) {
+  write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
+CGPROGRAM
+#pragma vertex vert
+#pragma fragment frag
+struct appdata { };
+struct v2f { };
+v2f vert(appdata v) { v2f o; return o; }
+fixed4 frag(v2f i) : SV_Target { clip(-1); return 0; }
+ENDCG
+} } }
+)");
+  FacetcRun run = facetc({"s.shader", "-o", "s.facetpkg"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+}
+
 TEST_F(FacetcTest, FunctionsNoEntryPointReachesAreNotCompiled) {
   write_all(dir_ / "s.shader", kUnreachableHelpers);
   FacetcRun run = facetc({"s.shader", "-DUSED=1", "-o", "s.facetpkg"});
