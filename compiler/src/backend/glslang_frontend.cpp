@@ -1,6 +1,7 @@
 #include "backend/glslang_frontend.h"
 
 #include "backend/global_declarations.h"
+#include "backend/hlsl_rewrite.h"
 #include "backend/reachable.h"
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <cctype>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -271,6 +273,36 @@ std::string without_unity_pragmas(std::string text) {
   return text;
 }
 
+// glslang's preprocessor writes a member access as "m . _11"; the
+// spaces go, so that the swizzle rewrite sees "m._11".
+std::string without_spaced_member_dots(const std::string& text) {
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == ' ' && !out.empty() && (ident(out.back()) || out.back() == ']' || out.back() == ')')) {
+      size_t j = i;
+      while (j < text.size() && text[j] == ' ') ++j;
+      size_t k = j + 1;
+      while (k < text.size() && text[k] == ' ') ++k;
+      bool member = j < text.size() && text[j] == '.' && k < text.size() && (std::isalpha(static_cast<unsigned char>(text[k])) || text[k] == '_');
+      if (member && !std::isdigit(static_cast<unsigned char>(out.back()))) {
+        out += '.';
+        i = k - 1;
+        continue;
+      }
+    }
+    out += text[i];
+    if (text[i] == '.' && out.size() > 1 && (ident(out[out.size() - 2]) || out[out.size() - 2] == ']') &&
+        !std::isdigit(static_cast<unsigned char>(out[out.size() - 2]))) {
+      size_t k = i + 1;
+      while (k < text.size() && text[k] == ' ') ++k;
+      if (k > i + 1 && k < text.size() && (std::isalpha(static_cast<unsigned char>(text[k])) || text[k] == '_')) i = k - 1;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
@@ -304,8 +336,9 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
       out.parse_log = std::move(preprocessed.parse_log);
       return out;
     }
-    reduced = with_static_initializers_in_entry(
-        without_unreachable_functions(without_unity_pragmas(preprocessed.preprocessed), entry), entry);
+    // Matrix swizzles again: a macro may build one ("input.a" with a = _22_23_24).
+    std::string text = rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed)));
+    reduced = with_static_initializers_in_entry(without_unreachable_functions(text, entry), entry);
     program_text = &reduced;
     if (std::optional<DeclarationProblem> problem = find_declaration_problem(reduced)) {
       std::string file = problem->file.empty() ? source.root_name : problem->file;

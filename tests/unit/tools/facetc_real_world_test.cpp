@@ -71,15 +71,18 @@ TEST_F(FacetcTest, ABadUnityVersionIsAUsageError) {
 }
 
 TEST_F(FacetcTest, AnIncludeWithAByteOrderMarkAndMatrixSwizzlesCompiles) {
+  // ROW builds a swizzle that only exists after preprocessing.
   write_all(dir_ / "lib.cginc", "\xEF\xBB\xBF// saved by a Windows editor\n"
                                 "float3 ObjectOrigin() { return unity_ObjectToWorld._14_24_34; }\n"
-                                "float ObjectScaleX() { return unity_ObjectToWorld._m00; }\n");
+                                "float ObjectScaleX() { return unity_ObjectToWorld._m00; }\n"
+                                "#define ROW(m, r) m.r\n"
+                                "float3 ObjectRow2() { return ROW(unity_ObjectToWorld, _21_22_23); }\n");
   write_all(dir_ / "s.shader", R"(Shader "T" { SubShader { Pass {
 CGPROGRAM
 #pragma vertex vert
 #pragma fragment frag
 #include "lib.cginc"
-float4 vert(float4 v : POSITION) : SV_Position { return UnityObjectToClipPos(v.xyz + ObjectOrigin() * ObjectScaleX()); }
+float4 vert(float4 v : POSITION) : SV_Position { return UnityObjectToClipPos(v.xyz + ObjectOrigin() * ObjectScaleX() + ObjectRow2()); }
 float4 frag() : SV_Target { return 1; }
 ENDCG
 } } }
