@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -201,12 +202,7 @@ class Checker {
           bracket += at(close).text == "[" ? 1 : at(close).text == "]" ? -1 : 0;
           if (bracket == 0) break;
         }
-        for (size_t k = i + 1; k + 1 < close; ++k) {
-          bool operand = at(k).kind != Token::punct;
-          if (operand && at(k + 1).kind == Token::ident) {
-            return fail(at(k + 1), "expected an operator or ']' before this name in an array size");
-          }
-        }
+        if (std::optional<std::string> problem = array_size_problem(i + 1, close)) return fail(at(i), *problem);
         for (size_t k = i; k <= close && k < end; ++k) dims += at(k).text;
         i = close + 1;
       }
@@ -220,6 +216,25 @@ class Checker {
       }
       ++i;
     }
+  }
+
+  // An array size glslang can parse without crashing: no stray character or
+  // ',', a start an expression may have, no two operands in a row.
+  std::optional<std::string> array_size_problem(size_t begin, size_t end) const {
+    static const std::set<std::string_view> kStarts = {"(", "-", "+", "!", "~"};
+    if (begin < end && at(begin).kind == Token::punct && !kStarts.count(at(begin).text)) {
+      return fmt::format("an array size cannot start with '{}'", at(begin).text);
+    }
+    for (size_t k = begin; k < end; ++k) {
+      std::string_view s = at(k).text;
+      if (s == "," || s == "\\" || s == "@" || s == "$" || s == "`" || s == "#" || s == "'") {
+        return fmt::format("an array size holds an unexpected '{}'", s);
+      }
+      if (k + 1 < end && at(k).kind != Token::punct && at(k + 1).kind != Token::punct) {
+        return fmt::format("an array size has two operands in a row, the second '{}'", at(k + 1).text);
+      }
+    }
+    return std::nullopt;
   }
 
   void declare(const Token& name, const std::string& type) {

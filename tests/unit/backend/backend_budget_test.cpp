@@ -102,7 +102,7 @@ TEST_F(BackendBudgetTest, ADeclarationMissingItsSemicolonBeforeAFunctionIsRead) 
 TEST_F(BackendBudgetTest, TwoOperandsInARowInAnArraySizeAreRefusedBeforeGlslang) {
   TestShader t = inline_shader("float w[t w];\nfloat f(float a) { return a; }");
   Diagnostic d = fail(t);
-  EXPECT_EQ(d.message, "'w': expected an operator or ']' before this name in an array size") << text_;
+  EXPECT_EQ(d.message, "'[': an array size has two operands in a row, the second 'w'") << text_;
 }
 
 TEST_F(BackendBudgetTest, ANameAfterAFunctionsDeclarationIsReadAsADeclarator) {

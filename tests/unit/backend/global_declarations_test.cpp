@@ -19,7 +19,7 @@ TEST(GlobalDeclarationsTest, TheEndOfTheTextEndsADeclarationAndMustCloseItsBrack
   // fuzz_hlsl's wrapper has nothing after the program: "float w[t w" at the end.
   auto last = find_declaration_problem("float f() { return 1; }\nfloat w[t w");
   ASSERT_TRUE(last);
-  EXPECT_EQ(last->message, "expected an operator or ']' before this name in an array size");
+  EXPECT_EQ(last->message, "an array size has two operands in a row, the second 'w'");
   EXPECT_EQ(last->line, 2u);
   auto open = find_declaration_problem("float f() { return (1; }");
   ASSERT_TRUE(open);
@@ -27,6 +27,27 @@ TEST(GlobalDeclarationsTest, TheEndOfTheTextEndsADeclarationAndMustCloseItsBrack
   auto never = find_declaration_problem("float f() { return 1;");
   ASSERT_TRUE(never);
   EXPECT_EQ(never->message, "'{' is never closed");
+}
+
+// Found by fuzz_hlsl: glslang crashes on a broken array size followed by an
+// initializer list.
+TEST(GlobalDeclarationsTest, AnArraySizeMustReadAsAnExpression) {
+  const std::pair<const char*, const char*> bad[] = {
+      {"static const float w[N\\] = {1, 2};", "an array size holds an unexpected '\\'"},
+      {"static const float w[* 2] = {1, 2};", "an array size cannot start with '*'"},
+      {"static const float w[,] = {1, 2};", "an array size cannot start with ','"},
+      {"static const float w[2, 3] = {1, 2};", "an array size holds an unexpected ','"},
+      {"static const float w[2 2] = {1, 2};", "an array size has two operands in a row, the second '2'"},
+  };
+  for (const auto& [text, message] : bad) {
+    auto p = find_declaration_problem(text);
+    ASSERT_TRUE(p) << text;
+    EXPECT_EQ(p->message, message) << text;
+    EXPECT_EQ(p->token, "[") << text;
+  }
+  for (const char* ok : {"float w[(N + 1) * 2];", "static const float w[-1 + N] = {1};", "float w[N][M];", "float w[];"}) {
+    EXPECT_FALSE(find_declaration_problem(ok)) << ok;
+  }
 }
 
 TEST(GlobalDeclarationsTest, WhatGlslangTakesIsNoProblem) {
