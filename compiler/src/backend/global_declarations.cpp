@@ -219,7 +219,7 @@ class Checker {
   }
 
   // An array size glslang can parse without crashing: no stray character or
-  // ',', a start an expression may have, no two operands in a row.
+  // ',', a start and an end an expression may have, no two operands in a row.
   std::optional<std::string> array_size_problem(size_t begin, size_t end) const {
     static const std::set<std::string_view> kStarts = {"(", "-", "+", "!", "~"};
     if (begin < end && at(begin).kind == Token::punct && !kStarts.count(at(begin).text)) {
@@ -233,6 +233,9 @@ class Checker {
       if (k + 1 < end && at(k).kind != Token::punct && at(k + 1).kind != Token::punct) {
         return fmt::format("an array size has two operands in a row, the second '{}'", at(k + 1).text);
       }
+    }
+    if (begin < end && at(end - 1).kind == Token::punct && at(end - 1).text != ")") {
+      return fmt::format("an array size cannot end with '{}'", at(end - 1).text);
     }
     return std::nullopt;
   }

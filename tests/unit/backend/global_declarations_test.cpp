@@ -38,6 +38,7 @@ TEST(GlobalDeclarationsTest, AnArraySizeMustReadAsAnExpression) {
       {"static const float w[,] = {1, 2};", "an array size cannot start with ','"},
       {"static const float w[2, 3] = {1, 2};", "an array size holds an unexpected ','"},
       {"static const float w[2 2] = {1, 2};", "an array size has two operands in a row, the second '2'"},
+      {"static const float w[N|] = {1, 2};", "an array size cannot end with '|'"},
   };
   for (const auto& [text, message] : bad) {
     auto p = find_declaration_problem(text);
