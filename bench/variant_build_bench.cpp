@@ -9,6 +9,9 @@
 //   facet_variant_bench --facetc build/compiler/facetc [--glslc glslc] [--work DIR]
 //                       [--naive-every K]   (time every K-th variant only, and scale up)
 //                       [--parallel N]      (the parallel rows use N threads / processes; default 2)
+//   facet_variant_bench --facetc build/compiler/facetc --report-vs-build [--parallel N]
+//                       (only: facetc --report against the cold build it describes, on the
+//                        generated uber shader and examples/uber/StandardUber.shader)
 #include <fmt/format.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -36,6 +39,7 @@ struct Options {
   std::string facetc, glslc = "glslc", work;
   unsigned naive_every = 1;
   unsigned parallel = 2;  // the parallel runs: facetc -jN and N glslc processes at a time
+  bool report_vs_build = false;
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -148,6 +152,7 @@ std::optional<Options> parse(int argc, char** argv) {
     else if (a == "--work") o.work = value();
     else if (a == "--naive-every") o.naive_every = unsigned(std::max(1, std::atoi(value().c_str())));
     else if (a == "--parallel") o.parallel = unsigned(std::max(2, std::atoi(value().c_str())));
+    else if (a == "--report-vs-build") o.report_vs_build = true;
     else return std::nullopt;
   }
   if (o.facetc.empty()) return std::nullopt;
@@ -157,6 +162,34 @@ std::optional<Options> parse(int argc, char** argv) {
 
 void row(const std::string& name, double seconds, double reference, const std::string& note = "") {
   std::cout << fmt::format("  {:<44} {:>9.2f} s {:>9.2f}x  {}\n", name, seconds, seconds / reference, note);
+}
+
+// facetc --report against a cold build of the same shader at -jN, both
+// without a cache, alternating, best of `rounds` each. Returns false when
+// either fails.
+bool report_against_build(const Options& o, const fs::path& shader, int rounds) {
+  const std::string common = quote(o.facetc) + " " + quote(shader.string()) + fmt::format(" -j{} --no-cache", o.parallel);
+  const fs::path w(o.work);
+  double build = 1e30, report = 1e30;
+  for (int i = 0; i < rounds; ++i) {
+    double b = timed(common + " -o " + quote((w / "report_bench.facetpkg").string()));
+    double r = timed(common + " --report -o " + quote((w / "report_bench.txt").string()));
+    if (b < 0 || r < 0) return false;
+    build = std::min(build, b);
+    report = std::min(report, r);
+  }
+  std::cout << fmt::format("  {:<44} build {:>8.2f} s  report {:>8.2f} s  report / build {:.2f}\n",
+                           shader.filename().string(), build, report, report / build);
+  return true;
+}
+
+int report_vs_build(const Options& o, const fs::path& uber) {
+  std::cout << fmt::format("facetc --report against the cold build it describes (-j{}, no cache, best of 2)\n",
+                           o.parallel);
+  fs::path example = fs::path(FACET_SOURCE_DIR) / "examples" / "uber" / "StandardUber.shader";
+  bool ok = report_against_build(o, uber, 2) && report_against_build(o, example, 2);
+  if (!ok) std::cerr << "facetc failed\n";
+  return ok ? 0 : 1;
 }
 
 }  // namespace
@@ -175,6 +208,7 @@ int main(int argc, char** argv) {
   std::string facetc = quote(o.facetc) + " " + quote(uber.string()) + " -o ";
   fs::path w(o.work);
 
+  if (o.report_vs_build) return report_vs_build(o, uber);
   std::cout << "uber shader: " << uber << "\n";
   double cold1 = timed(facetc + quote((w / "j1.facetpkg").string()) + " -j1 --no-cache");
   const std::string jn = fmt::format(" -j{}", o.parallel);

@@ -17,7 +17,7 @@
 namespace facet {
 
 // Arbitrary-precision unsigned integer supporting what counting needs:
-// construction from uint64_t, +, *, comparison and decimal printing.
+// construction from uint64_t, +, saturating -, *, comparison and decimal printing.
 // Invariant: limbs_ is little-endian base 2^32 with no most-significant zero
 // limbs, so zero is the empty vector and equal values have equal limbs.
 class BigCount {
@@ -30,8 +30,11 @@ class BigCount {
 
   BigCount& operator+=(const BigCount& other);
   BigCount& operator*=(const BigCount& other);
+  // Saturating: a - b is 0 when b >= a (counts never go negative).
+  BigCount& operator-=(const BigCount& other);
   friend BigCount operator+(BigCount a, const BigCount& b) { return a += b; }
   friend BigCount operator*(BigCount a, const BigCount& b) { return a *= b; }
+  friend BigCount operator-(BigCount a, const BigCount& b) { return a -= b; }
 
   bool operator==(const BigCount&) const = default;
   std::strong_ordering operator<=>(const BigCount& other) const;
@@ -39,6 +42,8 @@ class BigCount {
   bool is_zero() const { return limbs_.empty(); }
   // The value when it fits in 64 bits.
   std::optional<uint64_t> to_u64() const;
+  // The nearest double (for estimates that multiply a count by seconds).
+  double to_double() const;
   // Decimal digits, no separators: "0", "16", "1180591620717411303424".
   std::string to_string() const;
 

@@ -61,6 +61,8 @@ struct Diagnostic {
   // "in N of M variants". Both 0 when not merged.
   uint64_t variant_hits = 0;
   uint64_t variant_total = 0;
+  // A warning that -Werror made an error: printed "[-Werror,-W<group>]".
+  bool promoted = false;
 
   Diagnostic& note(SourceSpan s, std::string text) {
     notes.push_back({s, std::move(text)});

@@ -28,6 +28,11 @@ struct ReportOptions {
   // The keyword lists of the materials that use the shader (material
   // manifests); nullopt: no material rung.
   std::optional<std::vector<variants::KeywordList>> materials;
+  // The compile holds only each pass's default variant, because its space is
+  // too large to enumerate: the counting rungs stay exact, the rungs that
+  // need every program (after strip .. unique SPIR-V) are left out, and the
+  // what-ifs are counted from the keyword sets (PassReport::enumerated).
+  bool counted_only = false;
 };
 
 // One rung per column; counts of variants (full .. after_materials) and of
@@ -61,8 +66,9 @@ struct Finding {
 
 struct WhatIf {
   std::string change;           // "make 'multi_compile _ A' shader_feature"
-  uint64_t programs_saved = 0;  // stage programs fewer to compile
+  BigCount programs_saved = 0;  // stage programs fewer to compile
   double seconds_saved = 0;     // at this build's mean seconds per compiled program
+                                // (counted what-ifs: per program, before deduplication)
 };
 
 struct VariantRow {
@@ -74,6 +80,9 @@ struct VariantRow {
 struct PassReport {
   uint32_t index = 0;
   std::string name, light_mode;
+  // false: too many variants to enumerate (ReportOptions::counted_only);
+  // the ladders' program rungs are 0 and only the default variant was built.
+  bool enumerated = true;
   std::vector<Ladder> ladders;  // "pass" first, then each stage the program has
   std::vector<KeywordSetRow> sets;
   // Shortcut keywords facet's renderer never enables (lightmaps, ...):

@@ -325,7 +325,7 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
   const ir::Program& compiled = cast_program ? *cast_program : program;
   add_included_files(*includer, sources);
   LogContext context{compiled, stage, shader.file, source, *includer, sources,
-                     is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
+                     is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error, out.preprocessed};
   report_logs(out, context, diags);
   if (out.ok) {
     for (const CastCall& call : casts) {

@@ -35,7 +35,9 @@ struct GlslangOutput {
   std::string spirv_log;  // messages of GlslangToSpv
   std::vector<uint32_t> spirv;
   std::vector<DeclaredResource> declared;  // stage-independent order
-  std::string preprocessed;                // preprocess_glslang only
+  // preprocess_glslang's text; from run_glslang on HLSL, the whole program
+  // after preprocessing (before unreachable functions are dropped).
+  std::string preprocessed;
 };
 
 // Compiles `source` for `stage` with entry point `entry` ("main" for GLSL).

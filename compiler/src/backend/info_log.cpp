@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "backend/names_in_scope.h"
+
 namespace facet::backend {
 namespace {
 
@@ -146,6 +148,12 @@ class LogMapper {
     SourceSpan span = file != kNoFile && m.line > 0 ? locate(file, m) : SourceSpan{};
     if (m.text.starts_with(kIncludeFailure)) return report_missing_include(m, span, file);
     std::string message = format_message(m);
+    if (m.severity == Severity::error) {
+      std::string_view line = file != kNoFile && m.line > 0 ? ctx_.sources.line_text(file, m.line) : "";
+      if (auto undeclared = undeclared_identifier_message(m.token, m.text, ctx_.program_text, line)) {
+        message = std::move(*undeclared);
+      }
+    }
     if (file == kNoFile && !m.file.empty()) message = fmt::format("{}:{}: {}", m.file, m.line, message);
     DiagId id = m.severity == Severity::error ? ctx_.error_id : DiagId::shader_compiler_warning;
     Diagnostic& d = diags_.add(id, m.severity, span, std::move(message));
@@ -181,7 +189,59 @@ class LogMapper {
     while (m.column > 0 && col > 0 && col < line.size() && is_ident_char(line[col]) && is_ident_char(line[col - 1])) {
       --col;
     }
-    return {file, start + uint32_t(col), start + uint32_t(col)};
+    uint32_t at = start + uint32_t(col);
+    // glslang notices a missing ';' at the next token; it belongs after the
+    // previous one, as Clang points it.
+    if (m.text == "Expected" && m.token == ";") {
+      at = m.column > 0 ? end_of_previous_token(ctx_.sources.text(file), at)
+                        : missing_semicolon(ctx_.sources.text(file), start, line);
+    }
+    return {file, at, at};
+  }
+
+  // Where a ';' is missing on `line` (which starts at `start`), glslang
+  // giving no column: before a '}' that does not follow a ';', '{' or '}'
+  // ("return x }"), else after the token before the line when that token
+  // ends no statement ("float4 c = 1" on the line above), else the line's
+  // first token.
+  static uint32_t missing_semicolon(std::string_view text, uint32_t start, std::string_view line) {
+    std::string_view code = line.substr(0, line.find("//"));
+    for (size_t brace = code.find('}'); brace != std::string_view::npos; brace = code.find('}', brace + 1)) {
+      size_t before = code.find_last_not_of(" \t", brace == 0 ? std::string_view::npos : brace - 1);
+      if (brace == 0 || before == std::string_view::npos) continue;
+      if (code[before] != ';' && code[before] != '{' && code[before] != '}') return start + uint32_t(before + 1);
+    }
+    size_t first = line.find_first_not_of(" \t");
+    uint32_t first_token = start + uint32_t(first == std::string_view::npos ? 0 : first);
+    uint32_t previous_end = end_of_previous_token(text, start);
+    if (previous_end < start && previous_end > 0) {
+      char last = text[previous_end - 1];
+      if (last != ';' && last != '{' && last != '}') return previous_end;
+    }
+    return first_token;
+  }
+
+  // Where the token before `pos` ends, skipping spaces, line breaks and
+  // comments ("x = 1 // one" ends after "1").
+  static uint32_t end_of_previous_token(std::string_view text, uint32_t pos) {
+    size_t end = std::min<size_t>(pos, text.size());
+    while (end > 0) {
+      size_t line_begin = text.rfind('\n', end - 1);
+      line_begin = line_begin == std::string_view::npos ? 0 : line_begin + 1;
+      std::string_view line = text.substr(line_begin, end - line_begin);
+      if (size_t comment = line.find("//"); comment != std::string_view::npos) line = line.substr(0, comment);
+      size_t last = line.find_last_not_of(" \t\r");
+      if (last != std::string_view::npos && line.substr(0, last + 1).ends_with("*/")) {
+        size_t open = text.rfind("/*", line_begin + last);
+        if (open == std::string_view::npos) return pos;
+        end = open;
+        continue;
+      }
+      if (last != std::string_view::npos) return uint32_t(line_begin + last + 1);
+      if (line_begin == 0) return pos;
+      end = line_begin - 1;  // the previous line, without its '\n'
+    }
+    return pos;
   }
 
   void report_missing_include(const LogMessage& m, SourceSpan span, FileId file) {
@@ -198,7 +258,8 @@ class LogMapper {
     Diagnostic& d = diags_.add(DiagId::backend_include_not_found, span, fmt::format("include file '{}' not found", header));
     std::vector<std::string> dirs = ctx_.includer.search_dirs(m.file);
     std::string list;
-    for (const std::string& dir : dirs) list += (list.empty() ? "" : ", ") + fmt::format("'{}'", dir);
+    // The folder of a shader named without one is the current folder.
+    for (const std::string& dir : dirs) list += (list.empty() ? "" : ", ") + fmt::format("'{}'", dir.empty() ? "." : dir);
     d.note({}, list.empty() ? std::string("no include directories to search") : "searched " + list);
     d.include_stack = include_stack(m.file);
   }
@@ -370,11 +431,15 @@ void report_info_log(std::string_view log, LogContext& context, Diagnostics& dia
     }
     if (m.text == "compilation terminated" && real_errors > 0) continue;
     // Follow-on complaints after the first error of a line: the parser's
-    // "expected ..." and messages without a token of their own.
-    bool follow_on = m.severity == Severity::error && (m.text == "Expected" || m.token.empty()) &&
+    // "expected ..." and messages without a token of their own, and any
+    // error after a name that does not resolve (the expression it was in
+    // has no type, as Clang treats it).
+    bool follow_on = m.severity == Severity::error &&
                      std::any_of(messages.begin(), messages.end(), [&](const LogMessage& o) {
+                       bool unresolved = o.text == "unknown variable" || o.text == "no matching overloaded function found";
                        return &o < &m && !o.parse_failed_marker && o.severity == Severity::error &&
-                              same_place(o, m) && !m.file.empty();
+                              same_place(o, m) && !m.file.empty() &&
+                              (m.text == "Expected" || m.token.empty() || unresolved);
                      });
     if (follow_on) continue;
     mapper.report(m);

@@ -43,6 +43,9 @@ struct LogContext {
   const FileIncluder& includer;
   SourceMap& sources;
   DiagId error_id = DiagId::hlsl_error;
+  // The whole preprocessed program (HLSL; empty otherwise): the names in
+  // scope for "use of undeclared identifier" and its did-you-mean.
+  std::string_view program_text = {};
 };
 
 // Appends the log's messages to `diags`. Included files must already be in

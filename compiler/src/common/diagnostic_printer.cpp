@@ -112,6 +112,7 @@ std::string render_text(const Diagnostics& diags, const SourceMap& sources, cons
     std::string suffix;
     std::string_view group = diag_group(d.id);
     if (d.severity == Severity::warning && !group.empty()) suffix += fmt::format(" [-W{}]", group);
+    if (d.promoted) suffix += group.empty() ? std::string(" [-Werror]") : fmt::format(" [-Werror,-W{}]", group);
     if (d.variant_total > 1) suffix += fmt::format(" [in {} of {} variants]", d.variant_hits, d.variant_total);
     out += headline(d.severity, d.span, d.message, sources, options, suffix);
     if (options.show_source_line) out += source_excerpt(d.span, sources, options);

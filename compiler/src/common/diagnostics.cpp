@@ -80,7 +80,10 @@ Diagnostics apply_warning_options(const Diagnostics& diags, const WarningOptions
       bool disabled = std::find(options.disabled_groups.begin(), options.disabled_groups.end(), group) !=
                       options.disabled_groups.end();
       if (options.suppress_all || disabled) continue;
-      if (options.warnings_as_errors) d.severity = Severity::error;
+      if (options.warnings_as_errors) {
+        d.severity = Severity::error;
+        d.promoted = true;
+      }
     }
     out.push(std::move(d));
   }

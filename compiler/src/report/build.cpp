@@ -109,7 +109,15 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
       report.compiled += r.compiled;
     }
     pr.findings = keyword_findings(shader, sel, compiled, sources, p);
-    pr.what_ifs = what_ifs(sel, compiled.programs, p, pr.compile_seconds, options);
+    if (options.counted_only) {
+      pr.enumerated = false;
+      for (Ladder& l : pr.ladders) l.after_strip = l.programs = l.unique_tokens = l.unique_spirv = 0;
+      uint64_t compiles = 0;
+      for (const ProgramRecord& r : compiled.programs) compiles += r.pass == p && r.compiled;
+      pr.what_ifs = counted_what_ifs(sel, options, compiles ? pr.compile_seconds / double(compiles) : 0);
+    } else {
+      pr.what_ifs = what_ifs(sel, compiled.programs, p, pr.compile_seconds, options);
+    }
     report.compile_seconds += pr.compile_seconds;
     report.passes.push_back(std::move(pr));
   }

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -100,27 +101,35 @@ std::vector<std::string> replaced(std::vector<std::string> keywords, const std::
   return out;
 }
 
-// Free in `stage`: every program with the keyword has the same tokens as the
-// same program with the keyword's set in its off state. nullopt: no pair seen.
-std::optional<bool> free_in_stage(const variants::KeywordSet& set, const std::string& keyword, Stage stage,
-                                  const std::vector<ProgramRecord>& records, uint32_t pass) {
-  std::map<std::vector<std::string>, uint64_t> hash_of;
+// The token hash of each program of one pass and stage, by its keywords
+// sorted, so that a program's counterpart is found without a scan.
+using ProgramHashes = std::map<std::vector<std::string>, uint64_t>;
+
+ProgramHashes program_hashes(const std::vector<ProgramRecord>& records, uint32_t pass, Stage stage) {
+  ProgramHashes out;
   for (const ProgramRecord& r : records) {
-    if (r.pass == pass && r.stage == stage) hash_of.emplace(r.keywords, r.token_hash);
+    if (r.pass != pass || r.stage != stage) continue;
+    std::vector<std::string> sorted = r.keywords;
+    std::sort(sorted.begin(), sorted.end());
+    out.emplace(std::move(sorted), r.token_hash);
   }
+  return out;
+}
+
+// Free in a stage: every program with the keyword has the same tokens as the
+// same program with the keyword's set in its off state. nullopt: no pair seen.
+std::optional<bool> free_in_stage(const variants::KeywordSet& set, const std::string& keyword,
+                                  const ProgramHashes& programs) {
   std::string off = off_state(set, keyword);
   std::optional<bool> all_equal;
-  for (const auto& [keywords, hash] : hash_of) {
-    if (std::find(keywords.begin(), keywords.end(), keyword) == keywords.end()) continue;
+  for (const auto& [keywords, hash] : programs) {
+    if (!std::binary_search(keywords.begin(), keywords.end(), keyword)) continue;
     std::vector<std::string> other = replaced(keywords, keyword, off);
     std::sort(other.begin(), other.end());
-    for (const auto& [k2, h2] : hash_of) {
-      std::vector<std::string> sorted = k2;
-      std::sort(sorted.begin(), sorted.end());
-      if (sorted != other) continue;
-      if (hash == 0 || h2 == 0 || hash != h2) return false;
-      all_equal = true;
-    }
+    auto counterpart = programs.find(other);
+    if (counterpart == programs.end()) continue;
+    if (hash == 0 || counterpart->second == 0 || hash != counterpart->second) return false;
+    all_equal = true;
   }
   return all_equal;
 }
@@ -161,13 +170,17 @@ std::vector<Finding> keyword_findings(const ir::Shader& shader, const SelectedPa
     if (auto best = closest_name(name, candidates)) detail += fmt::format("; did you mean '{}'?", *best);
     out.push_back({FindingKind::undeclared, name, "", detail});
   }
+  std::vector<ProgramHashes> programs(kStageCount);
+  for (int s = 0; s < kStageCount; ++s) {
+    if (program.has_stage(Stage(s))) programs[s] = program_hashes(compiled.programs, pass_index, Stage(s));
+  }
   for (const variants::KeywordSet& set : pass.keywords.sets) {
     for (int s = 0; s < kStageCount; ++s) {
       Stage stage = Stage(s);
       if (!program.has_stage(stage) || !set.applies_to(stage)) continue;
       for (const std::string& k : set.keywords) {
         if (k.empty() || !all.tested.count(k)) continue;
-        if (free_in_stage(set, k, stage, compiled.programs, pass_index) == true) {
+        if (free_in_stage(set, k, programs[s]) == true) {
           out.push_back({FindingKind::free_in_stage, k, std::string(stage_name(stage)),
                          fmt::format("changes no token the {} entry point reaches, so its {} programs are "
                                      "shared (stage relevance); a stage suffix would only make that explicit",
@@ -217,6 +230,37 @@ std::string set_spelling(const variants::KeywordSet& set) {
   return set.pragma + words;
 }
 
+// The space's programs (variants each stage needs, summed) over `stages`.
+BigCount programs_in(const variants::KeywordSpace& space, const std::set<Stage>& stages,
+                     const ReportOptions& options) {
+  BigCount n = 0;
+  for (Stage s : stages) n += variants::count_variants(space, {.stage = s, .materials = options.materials}).reachable;
+  return n;
+}
+
+// Stage programs fewer if the multi_compile set `set` were a shader_feature
+// (only materials' combinations built).
+BigCount shader_feature_saving(const variants::KeywordSpace& space, const variants::KeywordSet& set,
+                               const std::set<Stage>& stages, const ReportOptions& options) {
+  variants::KeywordSpace modified = space;
+  for (variants::KeywordSet& m : modified.sets) {
+    if (m.span == set.span && m.keywords == set.keywords) m.directive = variants::KeywordDirective::shader_feature;
+  }
+  return programs_in(space, stages, options) - programs_in(modified, stages, options);
+}
+
+// `space` with `set` held in its default state, as if it were removed: its
+// other keywords become skip_variants, which keeps the set's index (and the
+// curated combinations that name it) intact.
+variants::KeywordSpace without_set_space(variants::KeywordSpace space, const variants::KeywordSet& set) {
+  bool has_off = std::find(set.keywords.begin(), set.keywords.end(), "") != set.keywords.end();
+  for (size_t i = 0; i < set.keywords.size(); ++i) {
+    if (set.keywords[i].empty() || (!has_off && i == 0)) continue;
+    space.skip_variants.push_back(set.keywords[i]);
+  }
+  return space;
+}
+
 }  // namespace
 
 std::vector<WhatIf> what_ifs(const SelectedPass& pass, const std::vector<ProgramRecord>& records, uint32_t pass_index,
@@ -248,33 +292,61 @@ std::vector<WhatIf> what_ifs(const SelectedPass& pass, const std::vector<Program
     if (set.keywords.size() < 2) continue;  // one state: it multiplies nothing
     auto [programs, unique] = count_in(all_stages);
     auto [left, left_compiles] = without_set(set, records, pass_index, all_stages);
-    out.push_back({fmt::format("remove '{}'", set_spelling(set)), programs - left,
+    out.push_back({fmt::format("remove '{}'", set_spelling(set)), BigCount(programs - left),
                    double(unique - std::min(unique, left_compiles)) * mean});
     bool beyond_fragment = std::any_of(other_than_fragment.begin(), other_than_fragment.end(),
                                        [&](Stage s) { return set.applies_to(s); });
     if (beyond_fragment && set.applies_to(Stage::fragment)) {
       auto [p_other, u_other] = count_in(other_than_fragment);
       auto [l_other, lc_other] = without_set(set, records, pass_index, other_than_fragment);
-      WhatIf w{fmt::format("make '{}' fragment-only (_fragment)", set_spelling(set)), p_other - l_other,
+      WhatIf w{fmt::format("make '{}' fragment-only (_fragment)", set_spelling(set)), BigCount(p_other - l_other),
                double(u_other - std::min(u_other, lc_other)) * mean};
-      if (w.seconds_saved == 0 && w.programs_saved > 0) w.change += " [stage relevance already shares these programs]";
+      if (w.seconds_saved == 0 && !w.programs_saved.is_zero()) w.change += " [stage relevance already shares these programs]";
       out.push_back(std::move(w));
     }
     if (set.directive == variants::KeywordDirective::multi_compile && options.materials) {
-      variants::KeywordSpace modified = pass.keywords;
-      for (variants::KeywordSet& m : modified.sets) {
-        if (m.span == set.span && m.keywords == set.keywords) m.directive = variants::KeywordDirective::shader_feature;
-      }
-      uint64_t now = 0, then = 0;
-      for (Stage s : all_stages) {
-        now += variants::count_variants(pass.keywords, {.stage = s, .materials = options.materials})
-                   .after_materials.to_u64().value_or(0);
-        then += variants::count_variants(modified, {.stage = s, .materials = options.materials})
-                    .after_materials.to_u64().value_or(0);
-      }
+      BigCount saved = shader_feature_saving(pass.keywords, set, all_stages, options);
       double ratio = programs ? double(compiles.size()) / double(programs) : 0;
-      out.push_back({fmt::format("make '{}' shader_feature", set_spelling(set)), now - std::min(now, then),
-                     double(now - std::min(now, then)) * ratio * mean});
+      out.push_back({fmt::format("make '{}' shader_feature", set_spelling(set)), saved,
+                     saved.to_double() * ratio * mean});
+    }
+  }
+  return out;
+}
+
+std::vector<WhatIf> counted_what_ifs(const SelectedPass& pass, const ReportOptions& options,
+                                     double seconds_per_program) {
+  std::set<Stage> all_stages, other_than_fragment;
+  for (int s = 0; s < kStageCount; ++s) {
+    if (!pass.ir->program->has_stage(Stage(s))) continue;
+    all_stages.insert(Stage(s));
+    if (Stage(s) != Stage::fragment) other_than_fragment.insert(Stage(s));
+  }
+  auto what_if = [&](std::string change, BigCount saved) {
+    double seconds = saved.to_double() * seconds_per_program;
+    return WhatIf{std::move(change), std::move(saved), seconds};
+  };
+  const variants::KeywordSpace& space = pass.keywords;
+  BigCount programs = programs_in(space, all_stages, options);
+  std::vector<WhatIf> out;
+  for (const variants::KeywordSet& set : space.sets) {
+    if (set.keywords.size() < 2) continue;  // one state: it multiplies nothing
+    out.push_back(what_if(fmt::format("remove '{}'", set_spelling(set)),
+                          programs - programs_in(without_set_space(space, set), all_stages, options)));
+    bool beyond_fragment = std::any_of(other_than_fragment.begin(), other_than_fragment.end(),
+                                       [&](Stage s) { return set.applies_to(s); });
+    if (beyond_fragment && set.applies_to(Stage::fragment)) {
+      variants::KeywordSpace fragment_only = space;
+      for (variants::KeywordSet& m : fragment_only.sets) {
+        if (m.span == set.span && m.keywords == set.keywords) m.stages = stage_bit(Stage::fragment);
+      }
+      out.push_back(what_if(fmt::format("make '{}' fragment-only (_fragment)", set_spelling(set)),
+                            programs_in(space, other_than_fragment, options) -
+                                programs_in(fragment_only, other_than_fragment, options)));
+    }
+    if (set.directive == variants::KeywordDirective::multi_compile && options.materials) {
+      out.push_back(what_if(fmt::format("make '{}' shader_feature", set_spelling(set)),
+                            shader_feature_saving(space, set, all_stages, options)));
     }
   }
   return out;

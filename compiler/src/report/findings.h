@@ -13,4 +13,10 @@ std::vector<Finding> keyword_findings(const ir::Shader& shader, const SelectedPa
 std::vector<WhatIf> what_ifs(const SelectedPass& pass, const std::vector<ProgramRecord>& records, uint32_t pass_index,
                              double compile_seconds, const ReportOptions& options);
 
+// The same changes for a pass too large to enumerate, counted from its
+// keyword sets: stage programs fewer, before any deduplication (so an upper
+// bound on compiles), at `seconds_per_program` each.
+std::vector<WhatIf> counted_what_ifs(const SelectedPass& pass, const ReportOptions& options,
+                                     double seconds_per_program);
+
 }  // namespace facet::report

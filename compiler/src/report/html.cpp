@@ -54,6 +54,9 @@ std::string set_label(const KeywordSetRow& s) {
   return words;
 }
 
+// A rung that needs every program compiled: a dash for a pass counted only.
+std::string compiled_rung(const PassReport& p, uint64_t value) { return p.enumerated ? std::to_string(value) : "–"; }
+
 std::string ladder_table(const PassReport& p) {
   std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th>"
                   "<th>after materials</th><th>reachable</th><th>after keyword_rule + --strip</th>"
@@ -63,10 +66,15 @@ std::string ladder_table(const PassReport& p) {
     t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td>"
                      "<td>{}</td><td>{}</td></tr>\n",
                      xml_escape(l.scope), l.full.to_string(), l.after_skip.to_string(),
-                     l.has_materials ? l.after_materials.to_string() : "–", l.reachable.to_string(), l.after_strip,
-                     l.programs, l.unique_tokens, l.unique_spirv);
+                     l.has_materials ? l.after_materials.to_string() : "–", l.reachable.to_string(),
+                     compiled_rung(p, l.after_strip), compiled_rung(p, l.programs), compiled_rung(p, l.unique_tokens),
+                     compiled_rung(p, l.unique_spirv));
   }
   t += "</table>\n";
+  if (!p.enumerated) {
+    t += "<p>Not enumerated: more variants than <code>--max-variants</code> allows. The counts are exact, only the "
+         "default variant was compiled, and the what-ifs count stage programs before deduplication.</p>\n";
+  }
   if (!p.unreachable_keywords.empty()) {
     t += fmt::format("<p>unreachable: {} (facet's renderer never enables them: counted, not built unless "
                      "<code>--build-unreachable</code>)</p>\n",
@@ -99,7 +107,7 @@ std::string pass_section(const PassReport& p) {
   if (!p.what_ifs.empty()) {
     h += "<table class=\"whatif\"><tr><th>what if</th><th>programs fewer</th><th>seconds saved</th></tr>\n";
     for (const WhatIf& w : p.what_ifs) {
-      h += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td></tr>\n", xml_escape(w.change), w.programs_saved,
+      h += fmt::format("<tr><td>{}</td><td>{}</td><td>{:.3f}</td></tr>\n", xml_escape(w.change), w.programs_saved.to_string(),
                        w.seconds_saved);
     }
     h += "</table>\n";

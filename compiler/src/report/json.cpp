@@ -17,22 +17,23 @@ Json count(const BigCount& n) {
   return n.to_string();
 }
 
-Json ladder_json(const Ladder& l) {
+Json ladder_json(const Ladder& l, bool enumerated) {
+  auto compiled = [&](uint64_t value) { return enumerated ? Json(value) : Json(nullptr); };
   Json j = {{"scope", l.scope}, {"full", count(l.full)}, {"after_skip_variants", count(l.after_skip)}};
   j["after_materials"] = l.has_materials ? count(l.after_materials) : Json(nullptr);
   j["reachable"] = count(l.reachable);
-  j["after_keyword_rules_and_strip"] = l.after_strip;
+  j["after_keyword_rules_and_strip"] = compiled(l.after_strip);
   j["after_scene_needs"] = nullptr;  // scenes are the runtime's (facet render --explain)
-  j["programs"] = l.programs;
-  j["unique_after_preprocessing"] = l.unique_tokens;
-  j["unique_spirv"] = l.unique_spirv;
+  j["programs"] = compiled(l.programs);
+  j["unique_after_preprocessing"] = compiled(l.unique_tokens);
+  j["unique_spirv"] = compiled(l.unique_spirv);
   return j;
 }
 
 Json pass_json(const PassReport& p) {
-  Json j = {{"index", p.index}, {"name", p.name}, {"light_mode", p.light_mode}};
+  Json j = {{"index", p.index}, {"name", p.name}, {"light_mode", p.light_mode}, {"enumerated", p.enumerated}};
   j["ladder"] = Json::array();
-  for (const Ladder& l : p.ladders) j["ladder"].push_back(ladder_json(l));
+  for (const Ladder& l : p.ladders) j["ladder"].push_back(ladder_json(l, p.enumerated));
   j["unreachable_keywords"] = p.unreachable_keywords;
   j["keyword_sets"] = Json::array();
   for (const KeywordSetRow& s : p.sets) {
@@ -49,7 +50,7 @@ Json pass_json(const PassReport& p) {
   j["what_if"] = Json::array();
   for (const WhatIf& w : p.what_ifs) {
     j["what_if"].push_back(
-        {{"change", w.change}, {"programs_saved", w.programs_saved}, {"seconds_saved", micro(w.seconds_saved)}});
+        {{"change", w.change}, {"programs_saved", count(w.programs_saved)}, {"seconds_saved", micro(w.seconds_saved)}});
   }
   j["compile_seconds"] = micro(p.compile_seconds);
   j["spirv_bytes"] = p.spirv_bytes;

@@ -14,14 +14,24 @@ std::string set_words(const KeywordSetRow& s) {
   return out;
 }
 
+// A rung that needs every program compiled: "-" for a pass counted only.
+std::string compiled_rung(const PassReport& p, uint64_t value) { return p.enumerated ? std::to_string(value) : "-"; }
+
 void ladder_table(const PassReport& p, std::string& out) {
   out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", "", "full", "after skip",
                      "materials", "reachable", "after strip", "programs", "unique pp", "unique spv");
   for (const Ladder& l : p.ladders) {
     out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", l.scope,
                        l.full.to_string(), l.after_skip.to_string(),
-                       l.has_materials ? l.after_materials.to_string() : "-", l.reachable.to_string(), l.after_strip,
-                       l.programs, l.unique_tokens, l.unique_spirv);
+                       l.has_materials ? l.after_materials.to_string() : "-", l.reachable.to_string(),
+                       compiled_rung(p, l.after_strip), compiled_rung(p, l.programs), compiled_rung(p, l.unique_tokens),
+                       compiled_rung(p, l.unique_spirv));
+  }
+  if (!p.enumerated) {
+    out += fmt::format("  not enumerated: {} variants are more than --max-variants allows; the counts are exact, "
+                       "only the default variant was compiled, and the what-ifs count stage programs before "
+                       "deduplication\n",
+                       p.ladders.empty() ? std::string("its") : p.ladders.front().reachable.to_string());
   }
   if (!p.unreachable_keywords.empty()) {
     out += fmt::format("  unreachable: {} (facet's renderer never enables them: counted in full and materials, "
@@ -43,7 +53,8 @@ void pass_text(const PassReport& p, std::string& out) {
                        f.stage.empty() ? "" : " in " + f.stage, f.detail);
   }
   for (const WhatIf& w : p.what_ifs) {
-    out += fmt::format("  what if: {} -> {} programs fewer, ~{:.3f} s\n", w.change, w.programs_saved, w.seconds_saved);
+    out += fmt::format("  what if: {} -> {} programs fewer, ~{:.3f} s\n", w.change, w.programs_saved.to_string(),
+                       w.seconds_saved);
   }
   std::vector<const VariantRow*> slowest;
   for (const VariantRow& v : p.variants) {

@@ -54,6 +54,7 @@ class Reader {
       out = {};
       out.property = t.text;
       out.span = t.span;
+      check_property_reference(t.text, t.span, ctx_);
       return true;
     }
     if (!color) {
@@ -71,6 +72,7 @@ class Reader {
     while (peek() && (peek()->kind == Token::Kind::number || peek()->kind == Token::Kind::property)) {
       const Token& t = take();
       if (t.kind == Token::Kind::property && numbers.size() < properties.size()) properties[numbers.size()] = t.text;
+      if (t.kind == Token::Kind::property) check_property_reference(t.text, t.span, ctx_);
       numbers.push_back(t.kind == Token::Kind::number ? float(t.number) : 0.0f);
       if (!at_symbol(",")) break;
       take();
@@ -353,8 +355,10 @@ bool read_alpha_test(const ast::LegacyCommand& c, FixedFunctionState& state, Con
   if (c.values.size() > 1) {
     const ast::Value& ref = c.values[1];
     state.alpha_ref.span = ref.span;
-    if (ref.kind == ast::Value::Kind::property) state.alpha_ref.property = ref.text;
-    else state.alpha_ref.literal[0] = std::strtof(ref.text.c_str(), nullptr);
+    if (ref.kind == ast::Value::Kind::property) {
+      state.alpha_ref.property = ref.text;
+      check_property_reference(ref.text, ref.span, ctx);
+    } else state.alpha_ref.literal[0] = std::strtof(ref.text.c_str(), nullptr);
   }
   return true;
 }
@@ -380,6 +384,7 @@ void apply(const ast::LegacyCommand& c, FixedFunctionState& state, Context& ctx)
       state.color.property = c.values[0].text;
       state.color.span = c.values[0].span;
       state.has_color = true;
+      check_property_reference(c.values[0].text, c.values[0].span, ctx);
     } else {
       ctx.error(DiagId::sema_bad_legacy_command, c.values[0].span, "expected '(r, g, b, a)' or '[_Prop]' after 'Color'");
     }

@@ -24,6 +24,7 @@ struct Context {
   Diagnostics& diags;
   size_t errors = 0;
   uint64_t program_bytes = 0;  // program text copied into the IR so far
+  std::vector<std::string> property_names;  // the Properties block's, once lowered
 
   Diagnostic& error(DiagId id, SourceSpan span, std::string message) {
     ++errors;
@@ -38,6 +39,10 @@ struct Context {
 
 // properties.cpp: types, defaults, duplicates.
 std::vector<ir::Property> lower_properties(const std::vector<ast::Property>& properties, Context& ctx);
+// A `[_Prop]` reference to no declared property reads a global of that name
+// (Unity's Shader.SetGlobal*), so only one close to a declared name is
+// reported: a warning with the did-you-mean.
+void check_property_reference(std::string_view name, SourceSpan span, Context& ctx);
 
 // render_state.cpp: one scope's commands, checked and canonicalised; a later
 // command of the same kind (and render target) replaces an earlier one.

@@ -1,8 +1,12 @@
 // Properties: the type name (case-insensitive), its arguments, the default
 // value's form, and unique names.
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <array>
 #include <unordered_map>
 
+#include "common/suggest.h"
 #include "sema/lower.h"
 
 namespace facet::sema {
@@ -153,6 +157,27 @@ std::vector<ir::Property> lower_properties(const std::vector<ast::Property>& pro
     if (ok) out.push_back(std::move(prop));
   }
   return out;
+}
+
+}  // namespace facet::sema
+
+namespace facet::sema {
+
+void check_property_reference(std::string_view name, SourceSpan span, Context& ctx) {
+  const std::vector<std::string>& names = ctx.property_names;
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::vector<std::string_view> candidates(names.begin(), names.end());
+  // A typo is an edit or two; a looser match would flag the globals.
+  auto best = suggest(name, candidates);
+  if (!best || edit_distance(name, *best) > std::max<size_t>(1, name.size() / 5)) return;
+  // The span of "[_Prop]" narrowed to the name, which the fix replaces.
+  const std::string& text = ctx.sources.text(span.file);
+  if (span.end > span.begin + 1 && span.end <= text.size() && text[span.begin] == '[' && text[span.end - 1] == ']') {
+    span = {span.file, span.begin + 1, span.end - 1};
+  }
+  ctx.report(DiagId::sema_unknown_property_reference, span,
+             fmt::format("'{}' is not a declared property; did you mean '{}'?", name, *best))
+      .fix(span, std::string(*best));
 }
 
 }  // namespace facet::sema

@@ -35,11 +35,14 @@ constexpr std::string_view kBlendOps[] = {
 constexpr std::string_view kStencilOps[] = {"Keep", "Zero", "Replace", "IncrSat", "DecrSat", "Invert",
                                             "IncrWrap", "DecrWrap"};
 
-ir::StateValue symbolic(const ast::Value& v) { return {"", v.text, v.span}; }
+ir::StateValue symbolic(const ast::Value& v, Context& ctx) {
+  check_property_reference(v.text, v.span, ctx);
+  return {"", v.text, v.span};
+}
 
 // A word from `values`, in canonical spelling.
 std::optional<ir::StateValue> word_value(const ast::Value& v, Values values, std::string_view command, Context& ctx) {
-  if (v.kind == ast::Value::Kind::property) return symbolic(v);
+  if (v.kind == ast::Value::Kind::property) return symbolic(v, ctx);
   if (v.kind == ast::Value::Kind::word) {
     for (std::string_view w : values) {
       if (iequals(w, v.text)) return ir::StateValue{std::string(w), "", v.span};
@@ -76,7 +79,7 @@ std::optional<ir::StateValue> compare_value(const ast::Value& v, std::string_vie
 // An integer literal in [lo, hi], printed canonically.
 std::optional<ir::StateValue> int_value(const ast::Value& v, long lo, long hi, std::string_view command,
                                         Context& ctx) {
-  if (v.kind == ast::Value::Kind::property) return symbolic(v);
+  if (v.kind == ast::Value::Kind::property) return symbolic(v, ctx);
   char* end = nullptr;
   double x = v.kind == ast::Value::Kind::number ? std::strtod(v.text.c_str(), &end) : 0;
   bool ok = end && *end == '\0' && x >= double(lo) && x <= double(hi) && x == std::floor(x);
@@ -89,7 +92,7 @@ std::optional<ir::StateValue> int_value(const ast::Value& v, long lo, long hi, s
 }
 
 std::optional<ir::StateValue> number_value(const ast::Value& v, std::string_view command, Context& ctx) {
-  if (v.kind == ast::Value::Kind::property) return symbolic(v);
+  if (v.kind == ast::Value::Kind::property) return symbolic(v, ctx);
   if (v.kind == ast::Value::Kind::number) return ir::StateValue{v.text, "", v.span};
   ctx.error(DiagId::sema_unknown_state_value, v.span,
             "'" + std::string(command) + "' expects a number or '[_Prop]', not '" + v.text + "'");
@@ -98,7 +101,7 @@ std::optional<ir::StateValue> number_value(const ast::Value& v, std::string_view
 
 // "0", or letters of RGBA each at most once, rewritten in RGBA order.
 std::optional<ir::StateValue> color_mask_value(const ast::Value& v, Context& ctx) {
-  if (v.kind == ast::Value::Kind::property) return symbolic(v);
+  if (v.kind == ast::Value::Kind::property) return symbolic(v, ctx);
   if (v.kind == ast::Value::Kind::number && v.text == "0") return ir::StateValue{"0", "", v.span};
   static constexpr std::string_view kChannels = "RGBA";
   std::array<bool, 4> used{};

@@ -133,6 +133,7 @@ Result<ir::Shader> analyze(const ast::Shader& shader, const SourceMap& sources, 
   out.custom_editor = shader.custom_editor;
   if (shader.fallback && !shader.fallback_off && !iequals(*shader.fallback, "Off")) out.fallback = shader.fallback;
   out.properties = lower_properties(shader.properties, ctx);
+  for (const ir::Property& p : out.properties) ctx.property_names.push_back(p.name);
   Scope root;
   root.includes = with_includes({}, shader.includes);
   std::vector<Scope> categories = lower_categories(shader, root, ctx);

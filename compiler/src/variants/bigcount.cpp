@@ -39,6 +39,27 @@ BigCount& BigCount::operator+=(const BigCount& other) {
   return *this;
 }
 
+BigCount& BigCount::operator-=(const BigCount& other) {
+  if (*this <= other) {
+    limbs_.clear();
+    return *this;
+  }
+  int64_t borrow = 0;
+  for (size_t i = 0; i < limbs_.size(); ++i) {
+    int64_t cell = int64_t(limbs_[i]) - borrow - (i < other.limbs_.size() ? int64_t(other.limbs_[i]) : 0);
+    borrow = cell < 0;
+    limbs_[i] = uint32_t(cell + (borrow << 32));
+  }
+  trim();
+  return *this;
+}
+
+double BigCount::to_double() const {
+  double value = 0;
+  for (size_t i = limbs_.size(); i-- > 0;) value = value * 4294967296.0 + double(limbs_[i]);
+  return value;
+}
+
 BigCount& BigCount::operator*=(const BigCount& other) {
   if (is_zero() || other.is_zero()) {
     limbs_.clear();

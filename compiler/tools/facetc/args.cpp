@@ -86,16 +86,16 @@ void add_options(CLI::App& app, RawArgs& raw) {
   app.add_option("--max-unroll", raw.max_unroll, "iterations of one [unroll] loop (default 4096; 0: no limit)");
   app.add_option("--time-limit", raw.time_limit, "seconds one stage may take to compile (default 60; 0: no limit)");
   app.add_flag("-w", raw.no_warnings, "suppress every warning");
-  app.add_flag("--Werror", raw.werror, "treat warnings as errors (also -Werror)");
-  app.add_option("--Wno", raw.disabled_groups, "switch a warning group off (also -Wno-<group>)")->allow_extra_args(false);
+  app.add_flag("--Werror", raw.werror, "treat warnings as errors (also --Werror)");
+  app.add_option("--Wno", raw.disabled_groups, "switch the warning group <group> off (also --Wno <group>)")->allow_extra_args(false);
   app.add_option("--diagnostics-format", raw.diagnostics_format, "text (default) or json")
       ->check(CLI::IsMember({"text", "json"}));
   app.add_option("--color", raw.color, "auto (default), always or never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
   app.add_flag("-M", raw.depfile_only, "print the make rule of the files the build reads; build nothing");
-  app.add_flag("--MD", raw.write_depfile, "also write a depfile (also -MD)");
-  app.add_option("--MF", raw.depfile, "the depfile's path (also -MF)");
-  app.add_option("--MT", raw.dep_target, "the depfile rule's target (also -MT)");
+  app.add_flag("--MD", raw.write_depfile, "also write a depfile (also --MD)");
+  app.add_option("--MF", raw.depfile, "the depfile's path (also --MF)");
+  app.add_option("--MT", raw.dep_target, "the depfile rule's target (also --MT)");
   app.add_option("-j,--jobs", raw.jobs, "worker threads (default: one per core); output does not depend on it");
   app.add_option("--shard", raw.shard, "build shard i of N (every N-th variant), e.g. 0/4; join with --merge");
   app.add_option("--emit-jobs", raw.emit_jobs, "write a ninja file (or JSON) with one job per distinct program")
@@ -396,6 +396,35 @@ std::vector<std::string> normalize_args(const std::vector<std::string>& argv) {
   return out;
 }
 
+namespace {
+
+// --help names the options glslc spells with one dash as glslc prints them
+// (-MD, -MF FILE, -Werror, -Wno-<group>); both spellings are accepted.
+std::string with_glslc_spellings(const std::string& help) {
+  static const std::pair<std::string_view, std::string_view> spellings[] = {
+      {"--Werror", "-Werror"}, {"--Wno TEXT ...", "-Wno-<group>"}, {"--MD", "-MD"},
+      {"--MF TEXT", "-MF FILE"}, {"--MT TEXT", "-MT TARGET"}};
+  std::string out;
+  size_t pos = 0;
+  while (pos < help.size()) {
+    size_t eol = help.find('\n', pos);
+    std::string line = help.substr(pos, eol == std::string::npos ? std::string::npos : eol - pos + 1);
+    pos = eol == std::string::npos ? help.size() : eol + 1;
+    for (auto [cli11, glslc] : spellings) {
+      std::string name = "  " + std::string(cli11);
+      if (!line.starts_with(name) || (line.size() > name.size() && line[name.size()] != ' ')) continue;
+      size_t description = line.find_first_not_of(' ', name.size());
+      if (description == std::string::npos || description < glslc.size() + 3) break;
+      line = "  " + std::string(glslc) + std::string(description - 2 - glslc.size(), ' ') + line.substr(description);
+      break;
+    }
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace
+
 ParsedArgs parse_args(const std::vector<std::string>& argv) {
   CLI::App app{"facetc: compiles ShaderLab .shader files to SPIR-V packages (see docs/cli.md)", "facetc"};
   app.get_formatter()->column_width(28);
@@ -406,7 +435,7 @@ ParsedArgs parse_args(const std::vector<std::string>& argv) {
   try {
     app.parse(reversed);
   } catch (const CLI::CallForHelp&) {
-    return {.text = app.help(), .exit_code = 0};
+    return {.text = with_glslc_spellings(app.help()), .exit_code = 0};
   } catch (const CLI::ParseError& e) {
     return {.text = fmt::format("facetc: error: {}\n(run 'facetc --help' for the options)\n", e.what()),
             .exit_code = 2};

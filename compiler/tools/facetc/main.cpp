@@ -15,6 +15,6 @@ int main(int argc, char** argv) {
   std::error_code ec;
   auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) parsed.args->facetc_path = self.string();
-  facet::tools::Console console{std::cout, std::cerr};
+  facet::tools::Console console{std::cout, std::cerr, &std::cin};
   return facet::tools::run_facetc(*parsed.args, console);
 }

@@ -2,6 +2,8 @@
 #include "report_mode.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <unistd.h>
 
 #include "facet/report.h"
@@ -42,6 +44,55 @@ CompileOptions stripped_options(CompileOptions options, const StripInputs& strip
 
 namespace {
 
+// A pass whose variants (as the build would enumerate them) pass the limit
+// is reported from its counts, with only its default variant compiled.
+bool too_large_to_enumerate(const SelectedPass& pass, const CompileOptions& options) {
+  if (options.max_variants_per_pass == 0) return false;
+  variants::VariantCounts counts = variants::count_variants(pass.keywords);
+  const BigCount& built = options.build_unreachable ? counts.after_skip : counts.reachable;
+  return built > BigCount(options.max_variants_per_pass);
+}
+
+// The report of the passes `subset` names (SubShader indices), compiled in
+// full, or only their default variants when `counted`.
+std::optional<report::ShaderReport> report_passes(const Compiler& compiler, const ir::Shader& shader,
+                                                  CompileOptions options, std::vector<std::string> subset,
+                                                  bool counted, report::ReportOptions report_options,
+                                                  SourceMap& sources, Diagnostics& diags,
+                                                  std::vector<std::string>& read) {
+  options.passes = std::move(subset);
+  if (counted) {
+    options.keywords = std::vector<std::string>{};
+    options.strip = {};
+  }
+  Diagnostics selection_diags;  // the first selection, of every pass, reported these
+  auto passes = compiler.select_passes(shader, options, selection_diags);
+  if (!passes) return std::nullopt;
+  std::optional<BuildEstimate> estimate;
+  if (!counted) {
+    Diagnostics estimate_diags;  // the build reports the same problems
+    if (auto e = compiler.estimate(shader, options, sources, estimate_diags)) estimate = *e;
+  }
+  auto compiled = compiler.compile(shader, options, sources, diags);
+  if (!compiled) return std::nullopt;
+  read.insert(read.end(), compiled->dependencies.begin(), compiled->dependencies.end());
+  report_options.counted_only = counted;
+  report::ShaderReport r = report::build_report(shader, *passes, *compiled, sources, report_options);
+  r.estimate = estimate;
+  return r;
+}
+
+// `into` gains the passes and totals of `part`; passes stay in SubShader order.
+void merge_report(report::ShaderReport& into, report::ShaderReport part) {
+  into.compile_seconds += part.compile_seconds;
+  into.programs += part.programs;
+  into.compiled += part.compiled;
+  if (!into.estimate) into.estimate = part.estimate;
+  for (report::PassReport& p : part.passes) into.passes.push_back(std::move(p));
+  std::stable_sort(into.passes.begin(), into.passes.end(),
+                   [](const report::PassReport& a, const report::PassReport& b) { return a.index < b.index; });
+}
+
 // `read` gains every file the shader's build read (itself and its includes).
 std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Compiler& compiler,
                                                const std::string& path, const StripInputs& strip, Console& console,
@@ -55,19 +106,23 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
     // rung is counted, not stripped, so that the report shows what it removes.
     CompileOptions options = compile_options(args, false);
     options.strip = strip.filter;
-    auto passes = compiler.select_passes(*shader, options, diags);
-    Diagnostics estimate_diags;  // the build reports the same problems
-    auto estimate = compiler.estimate(*shader, options, sources, estimate_diags);
-    std::optional<CompiledShader> compiled;
-    if (passes) {
-      if (auto c = compiler.compile(*shader, options, sources, diags)) compiled = std::move(*c);
-    }
-    if (compiled) read.insert(read.end(), compiled->dependencies.begin(), compiled->dependencies.end());
-    if (compiled && !apply_warning_options(diags, args.warnings).has_errors()) {
-      report::ReportOptions report_options;
-      if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
-      result = report::build_report(*shader, *passes, *compiled, sources, report_options);
-      if (estimate) result->estimate = *estimate;
+    report::ReportOptions report_options;
+    if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
+    if (auto passes = compiler.select_passes(*shader, options, diags)) {
+      std::vector<std::string> enumerable, counted;
+      for (const SelectedPass& pass : *passes) {
+        (too_large_to_enumerate(pass, options) ? counted : enumerable).push_back(std::to_string(pass.pass));
+      }
+      bool ok = true;
+      report::ShaderReport merged{.path = sources.path(shader->file), .name = shader->name};
+      for (bool counting : {false, true}) {
+        std::vector<std::string>& subset = counting ? counted : enumerable;
+        if (subset.empty() || !ok) continue;
+        auto part = report_passes(compiler, *shader, options, subset, counting, report_options, sources, diags, read);
+        if (part) merge_report(merged, std::move(*part));
+        ok = part.has_value();
+      }
+      if (ok && !apply_warning_options(diags, args.warnings).has_errors()) result = std::move(merged);
     }
   }
   for (FileId id = 0; id < sources.file_count(); ++id) read.push_back(sources.path(id));

@@ -188,21 +188,58 @@ Result<Produced> dump_package_file(const FacetcArgs& args, const std::string& in
   return Produced{.bytes = package::package_to_json(*pkg), .output = args.output};
 }
 
+// The input '-': standard input, read whole (at most kMaxShaderBytes), as
+// glslc reads it. It is named "<stdin>" and its #includes are found from the
+// current folder.
+constexpr const char* kStdinName = "<stdin>";
+
+Result<std::string> read_standard_input(std::istream* in, Diagnostics& diags) {
+  if (!in) {
+    diags.add(DiagId::io_cannot_read, {}, "standard input ('-') cannot be read here");
+    return failure("no stdin");
+  }
+  std::string text;
+  char buffer[1 << 16];
+  while (in->read(buffer, sizeof buffer) || in->gcount() > 0) {
+    text.append(buffer, size_t(in->gcount()));
+    if (text.size() > kMaxShaderBytes) {
+      diags.add(DiagId::io_too_large, {},
+                fmt::format("standard input is over {} bytes, the limit of a shader", kMaxShaderBytes));
+      return failure("too large");
+    }
+  }
+  return text;
+}
+
+Result<ir::Shader> load_input(const FacetcArgs& args, const Compiler& compiler, const std::string& input,
+                              std::istream* in, SourceMap& sources, Diagnostics& diags) {
+  if (input != "-") return compiler.load(input, sources, diags, compile_options(args, false).backend);
+  auto text = read_standard_input(in, diags);
+  FACET_TRY(text);
+  return compiler.load_source(kStdinName, std::move(*text), sources, diags, compile_options(args, false).backend);
+}
+
 Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
-                         const std::string& input, SourceMap& sources, Diagnostics& diags) {
+                         const std::string& input, std::istream* in, SourceMap& sources, Diagnostics& diags) {
   if (args.mode == Mode::dump && is_package_file(input)) return dump_package_file(args, input, diags);
+  if (input == "-" && args.output.empty() && args.out_dir.empty() &&
+      (args.mode == Mode::package || (args.mode == Mode::depfile_only && args.write_depfile))) {
+    diags.add(DiagId::driver_bad_option, {}, "a package of standard input ('-') needs a name: give -o");
+    return Produced{.usage_error = true};
+  }
   if (args.mode == Mode::depfile_only && !args.depfile.empty() && !args.output.empty()) {
     diags.add(DiagId::driver_bad_option, {}, "-M writes its rule to the file -o or -MF names; give one of them");
     return Produced{.usage_error = true};
   }
   if (args.mode == Mode::dump && args.dump == DumpKind::ast) {
-    auto text = read_file(input, kMaxShaderBytes, diags);
+    auto text = input == "-" ? read_standard_input(in, diags) : read_file(input, kMaxShaderBytes, diags);
     FACET_TRY(text);
-    auto ast = shaderlab::parse(sources.add_file(input, std::move(*text)), sources, {}, diags);
+    auto ast = shaderlab::parse(sources.add_file(input == "-" ? kStdinName : input, std::move(*text)), sources, {},
+                                diags);
     FACET_TRY(ast);
     return Produced{.bytes = shaderlab::ast_to_json(*ast, sources), .output = args.output};
   }
-  auto shader = compiler.load(input, sources, diags, compile_options(args, false).backend);
+  auto shader = load_input(args, compiler, input, in, sources, diags);
   FACET_TRY(shader);
   switch (args.mode) {
     case Mode::package:
@@ -276,7 +313,7 @@ std::vector<std::string> dependencies(const std::string& input, const SourceMap&
   }
   std::sort(deps.begin(), deps.end());
   deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
-  deps.insert(deps.begin(), input);
+  if (input != "-") deps.insert(deps.begin(), input);  // standard input is no file to depend on
   return deps;
 }
 
@@ -288,7 +325,8 @@ bool to_stdout(const std::string& output) { return output.empty() || output == "
 std::vector<RunInput> run_inputs(const FacetcArgs& args, const std::string& input,
                                  const std::vector<std::string>& deps, const std::vector<std::string>& read_before) {
   std::vector<RunInput> inputs{{input, "the shader"}};
-  add_inputs(inputs, std::vector<std::string>(deps.begin() + 1, deps.end()), "an include file");
+  size_t includes_from = input == "-" ? 0 : 1;  // dependencies() lists the input first, unless it is stdin
+  add_inputs(inputs, std::vector<std::string>(deps.begin() + includes_from, deps.end()), "an include file");
   add_inputs(inputs, args.inputs, "a shader of this run");
   add_inputs(inputs, read_before, "a file an earlier input read");
   add_inputs(inputs, args.material_files, "a materials file");
@@ -378,7 +416,7 @@ int process_input(const FacetcArgs& args, const Compiler& compiler, const StripI
                   std::vector<std::string>& read_before) {
   SourceMap sources;
   Diagnostics raw;
-  Result<Produced> produced = produce(args, compiler, strip, input, sources, raw);
+  Result<Produced> produced = produce(args, compiler, strip, input, console.in, sources, raw);
   Diagnostics diags = apply_warning_options(raw, args.warnings);
   bool ok = produced && !produced->usage_error && !diags.has_errors();
   if (ok && !write_outputs(args, input, *produced, sources, console, diags, read_before)) ok = false;
@@ -444,6 +482,10 @@ int run_facetc(const FacetcArgs& args, Console& console) {
     exit_code = run_report(args, compiler, *strip, console, json_diagnostics);
     if (args.diagnostics_format == DiagnosticsFormat::json) console.err << json_diagnostics.dump(2) << "\n";
     return exit_code;
+  }
+  if (std::count(args.inputs.begin(), args.inputs.end(), "-") > 1) {
+    console.err << "facetc: error: standard input ('-') can be an input once\n";
+    return 2;
   }
   std::vector<std::string> read_before;
   for (const std::string& input : args.inputs) {

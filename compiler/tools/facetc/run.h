@@ -2,6 +2,7 @@
 // when the input compiled without errors (atomically, never half-written).
 #pragma once
 
+#include <istream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ namespace facet::tools {
 struct Console {
   std::ostream& out;  // standard output: text outputs and '-o -'
   std::ostream& err;  // diagnostics, --stats
+  std::istream* in = nullptr;  // standard input: the input '-' (none: '-' is refused)
 };
 
 // Exit code: 0 success, 1 compile errors (or warnings under -Werror), 2 usage

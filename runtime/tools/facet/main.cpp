@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "facet/commands.h"
+#include "facet/compiler.h"
 
 namespace {
 
@@ -25,8 +26,33 @@ constexpr Subcommand kSubcommands[] = {
 int usage(std::ostream& os) {
   os << "usage: facet <subcommand> [options]\n\nsubcommands:\n";
   for (const Subcommand& s : kSubcommands) os << "  " << s.name << "  " << s.summary << "\n";
-  os << "\n`facet <subcommand> --help` lists its options.\n";
+  os << "\n`facet help <subcommand>` (or `facet <subcommand> --help`) lists its options;\n"
+        "`facet --version` prints the version.\n";
   return 1;
+}
+
+const Subcommand* find_subcommand(const char* name) {
+  for (const Subcommand& s : kSubcommands) {
+    if (!std::strcmp(name, s.name)) return &s;
+  }
+  return nullptr;
+}
+
+int unknown_subcommand(const char* name) {
+  std::cerr << "facet: unknown subcommand '" << name << "'\n";
+  return usage(std::cerr);
+}
+
+// `facet help`, `facet help <subcommand>`.
+int help(int argc, char** argv) {
+  if (argc < 3) {
+    usage(std::cout);
+    return 0;
+  }
+  const Subcommand* s = find_subcommand(argv[2]);
+  if (!s) return unknown_subcommand(argv[2]);
+  const char* args[] = {s->name, "--help"};
+  return s->run(2, args, std::cout, std::cerr);
 }
 
 }  // namespace
@@ -37,9 +63,11 @@ int main(int argc, char** argv) {
     usage(std::cout);
     return 0;
   }
-  for (const Subcommand& s : kSubcommands) {
-    if (!std::strcmp(argv[1], s.name)) return s.run(argc - 1, argv + 1, std::cout, std::cerr);
+  if (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version")) {
+    std::cout << facet::version_string() << "\n";
+    return 0;
   }
-  std::cerr << "facet: unknown subcommand '" << argv[1] << "'\n";
-  return usage(std::cerr);
+  if (!std::strcmp(argv[1], "help")) return help(argc, argv);
+  if (const Subcommand* s = find_subcommand(argv[1])) return s->run(argc - 1, argv + 1, std::cout, std::cerr);
+  return unknown_subcommand(argv[1]);
 }

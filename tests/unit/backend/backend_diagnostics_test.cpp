@@ -44,7 +44,7 @@ TEST_F(BackendDiagnosticsTest, ErrorInBodyPointsAtShaderLineAndColumn) {
   TestShader t = load_shader("error.shader");
   std::string text = fail(t);
   std::string where = position_of(t.sources, t.shader.file, "undefinedThing");
-  EXPECT_NE(text.find(where + ": error: 'undefinedThing': unknown variable"), std::string::npos) << text;
+  EXPECT_NE(text.find(where + ": error: use of undeclared identifier 'undefinedThing'"), std::string::npos) << text;
   // Exactly line 28, column 50 of the file, counted by hand.
   EXPECT_NE(where.find("error.shader:28:50"), std::string::npos) << where;
   const Diagnostic& d = first_error();
@@ -102,19 +102,20 @@ TEST_F(BackendDiagnosticsTest, ErrorInCgIncludeChunkMapsToItsLine) {
   std::string text = fail(t);
   std::string where = position_of(t.sources, t.shader.file, "missingScale");
   EXPECT_NE(where.find("cginclude_error.shader:7:"), std::string::npos);
-  EXPECT_NE(text.find(where + ": error: 'missingScale': unknown variable"), std::string::npos) << text;
+  EXPECT_NE(text.find(where + ": error: use of undeclared identifier 'missingScale'"), std::string::npos) << text;
 }
 
-TEST_F(BackendDiagnosticsTest, SyntaxErrorPointsAtTheNextToken) {
+TEST_F(BackendDiagnosticsTest, MissingSemicolonPointsAfterThePreviousToken) {
   TestShader t = load_shader("syntax_error.shader");
   std::string text = fail(t);
   const Diagnostic& d = first_error();
   EXPECT_EQ(d.message, "expected ';'") << text;
-  // glslang notices the missing ';' at "return" on the next line.
+  // glslang notices the missing ';' at "return" on line 14; it belongs right
+  // after "fixed4(1, 0, 0, 1)" on line 13, as Clang points it.
   EXPECT_EQ(d.span.file, t.shader.file);
   LineColumn lc = t.sources.line_column(d.span.file, d.span.begin);
-  EXPECT_EQ(lc.line, 14u) << text;
-  EXPECT_EQ(lc.column, 17u) << text;
+  EXPECT_EQ(lc.line, 13u) << text;
+  EXPECT_EQ(lc.column, 46u) << text;
 }
 
 TEST_F(BackendDiagnosticsTest, MissingEntryFunctionPointsAtThePragma) {

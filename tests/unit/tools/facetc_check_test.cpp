@@ -135,7 +135,7 @@ TEST_F(FacetcCheckTest, CheckFolderPrintsALinePerShaderAndTheSummary) {
   std::vector<std::string> out = lines(run.out);
   ASSERT_EQ(out.size(), 6u) << run.out;
   // Sorted by path; the first error as file:line:col: error: message.
-  EXPECT_THAT(out[0], StartsWith("FAIL shaders/bad_hlsl.shader: shaders/bad_hlsl.shader:8:"));
+  EXPECT_THAT(out[0], StartsWith("FAIL shaders/bad_hlsl.shader: shaders/bad_hlsl.shader:8:66: error: expected ';'"));
   EXPECT_THAT(out[0], HasSubstr(": error: "));
   EXPECT_THAT(out[1], StartsWith("FAIL shaders/bad_syntax.shader: shaders/bad_syntax.shader:5:9: error: "));
   EXPECT_EQ(out[2], "ok   shaders/good.shader");

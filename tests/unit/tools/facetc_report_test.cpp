@@ -1,5 +1,7 @@
 // facetc --report end to end: formats, folders, material manifests and their
 // bad inputs.
+#include <fmt/format.h>
+
 #include <nlohmann/json.hpp>
 
 #include "facetc_test_util.h"
@@ -84,6 +86,97 @@ TEST_F(FacetcTest, BadManifestsAreLocatedErrors) {
     EXPECT_THAT(run.err, HasSubstr(message)) << text;
     EXPECT_FALSE(fs::exists(dir_ / "r.txt"));
   }
+}
+
+// A pass of 2^65 variants (63 multi_compile sets, a fragment-only one and a
+// shader_feature) cannot be enumerated; its report still gives the exact
+// ladder, each set's factor and the what-ifs, counted from the sets, while
+// the small pass beside it is reported from its full build.
+std::string huge_space_shader() {
+  std::string pragmas, uses;
+  for (int i = 0; i < 63; ++i) {
+    pragmas += fmt::format("        #pragma multi_compile _ K{}\n", i);
+    uses += fmt::format("        #ifdef K{}\n        c.r += 0.01;\n        #endif\n", i);
+  }
+  return R"(Shader "Test/Huge" {
+  SubShader {
+    Pass {
+      Name "Small"
+      CGPROGRAM
+      #pragma vertex vert
+      #pragma fragment frag
+      #pragma multi_compile _ SMALL_ON
+      float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+      float4 frag() : SV_Target {
+      #ifdef SMALL_ON
+        return 1;
+      #else
+        return 0;
+      #endif
+      }
+      ENDCG
+    }
+    Pass {
+      Name "Huge"
+      CGPROGRAM
+      #pragma vertex vert
+      #pragma fragment frag
+)" + pragmas + R"(        #pragma multi_compile_fragment _ FRAG_ON
+        #pragma shader_feature _ SF_ON
+        float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+        float4 frag() : SV_Target {
+        float4 c = 0;
+)" + uses + R"(        #ifdef FRAG_ON
+        c.g = 1;
+        #endif
+        #ifdef SF_ON
+        c.b = 1;
+        #endif
+        return c;
+        }
+      ENDCG
+    }
+  }
+}
+)";
+}
+
+TEST_F(FacetcTest, ReportOfASpaceTooLargeToEnumerateCountsItExactly) {
+  write_all(dir_ / "Huge.shader", huge_space_shader());
+  FacetcRun text = facetc({"--report", "Huge.shader"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("pass #1 'Huge'"));
+  EXPECT_THAT(text.out, ::testing::ContainsRegex(
+                            "pass +36893488147419103232 +36893488147419103232 +- +36893488147419103232 +- +- +- +-\n"));
+  EXPECT_THAT(text.out, ::testing::ContainsRegex(
+                            "vertex +18446744073709551616 +18446744073709551616 +- +18446744073709551616 +- +- +- +-\n"));
+  EXPECT_THAT(text.out, HasSubstr("not enumerated: 36893488147419103232 variants are more than --max-variants allows"));
+  EXPECT_THAT(text.out, HasSubstr("x2    multi_compile _ K62  [vertex fragment]"));
+  EXPECT_THAT(text.out, HasSubstr("x2    multi_compile_fragment _ FRAG_ON  [fragment]"));
+  // Removing K0 halves both stages: (2^64 + 2^65) / 2 programs fewer.
+  EXPECT_THAT(text.out, HasSubstr("what if: remove 'multi_compile _ K0' -> 27670116110564327424 programs fewer"));
+  EXPECT_THAT(text.out,
+              HasSubstr("what if: make 'multi_compile _ K0' fragment-only (_fragment) -> 9223372036854775808 programs fewer"));
+  EXPECT_THAT(text.out, HasSubstr("what if: remove 'multi_compile_fragment _ FRAG_ON' -> 18446744073709551616 programs fewer"));
+  // The small pass is built in full: its compiled rungs are there.
+  EXPECT_THAT(text.out, ::testing::ContainsRegex("pass #0 'Small'[^\n]*\n[^\n]*\n +pass +2 +2 +- +2 +2 +4 +3 +"));
+
+  FacetcRun json = facetc({"--report=json", "Huge.shader"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  auto doc = nlohmann::json::parse(json.out);
+  const auto& passes = doc["shaders"][0]["passes"];
+  ASSERT_EQ(passes.size(), 2u);
+  EXPECT_EQ(passes[0]["enumerated"], true);
+  EXPECT_EQ(passes[1]["enumerated"], false);
+  EXPECT_EQ(passes[1]["ladder"][0]["full"], "36893488147419103232");
+  EXPECT_TRUE(passes[1]["ladder"][0]["programs"].is_null());
+  EXPECT_EQ(passes[1]["keyword_sets"].size(), 65u);
+  EXPECT_EQ(passes[1]["what_if"][0]["programs_saved"], "27670116110564327424");
+
+  // Under the limit, the same pass is refused by a plain build as before.
+  FacetcRun build = facetc({"Huge.shader", "-o", "huge.facetpkg"});
+  EXPECT_EQ(build.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "huge.facetpkg"));
 }
 
 }  // namespace

@@ -75,6 +75,23 @@ TEST(BigCountTest, ToU64OnlyWhenItFits) {
   EXPECT_FALSE(BigCount::pow(2, 64).to_u64().has_value());
 }
 
+TEST(BigCountTest, SubtractionBorrowsAcrossLimbsAndSaturatesAtZero) {
+  // 2^65 - 1 = 36893488147419103231: a borrow through two zero limbs.
+  EXPECT_EQ((BigCount::pow(2, 65) - 1).to_string(), "36893488147419103231");
+  EXPECT_EQ((BigCount::pow(2, 65) - BigCount::pow(2, 64)).to_string(), "18446744073709551616");
+  EXPECT_EQ(BigCount(3) * BigCount::pow(2, 64) - BigCount(3) * BigCount::pow(2, 63),
+            BigCount(3) * BigCount::pow(2, 63));
+  EXPECT_TRUE((BigCount(5) - BigCount(7)).is_zero()) << "counts never go negative";
+  EXPECT_TRUE((BigCount::pow(2, 70) - BigCount::pow(2, 70)).is_zero());
+}
+
+TEST(BigCountTest, ToDoubleIsTheNearestDouble) {
+  EXPECT_EQ(BigCount(0).to_double(), 0.0);
+  EXPECT_EQ(BigCount(12345).to_double(), 12345.0);
+  EXPECT_EQ(BigCount::pow(2, 65).to_double(), 36893488147419103232.0);
+  EXPECT_DOUBLE_EQ(BigCount::pow(3, 41).to_double(), 36472996377170786403.0);
+}
+
 TEST(BigCountTest, StreamsAsDecimal) {
   std::ostringstream out;
   out << BigCount::pow(3, 41);
