@@ -118,13 +118,6 @@ struct ProgramRecord {
   uint32_t blob = UINT32_MAX;         // its SPIR-V in Package::spirv_blobs
 };
 
-struct CompiledShader {
-  package::Package package;
-  std::vector<std::string> dependencies;  // the .shader and every included file, sorted
-  CompileStats stats;
-  std::vector<ProgramRecord> programs;    // in pass, then first-use order
-};
-
 // What a build would cost, known before it runs: every program is
 // preprocessed (cheap), and an evenly spread sample of the distinct ones is
 // compiled and timed.
@@ -137,6 +130,22 @@ struct BuildEstimate {
   double seconds_per_program = 0; // mean compile time of the sample, one thread
   double estimated_seconds = 0;   // preprocess + unique x mean / threads
   unsigned jobs = 0;
+};
+
+// Programs an estimate compiles and times.
+inline constexpr size_t kEstimateSample = 16;
+
+struct CompiledShader {
+  package::Package package;
+  std::vector<std::string> dependencies;  // the .shader and every included file, sorted
+  CompileStats stats;
+  std::vector<ProgramRecord> programs;    // in pass, then first-use order
+  // What Compiler::estimate would have said before this build, worked out
+  // from the build's own preprocessing time and the compile times of the
+  // same evenly spread sample (so a report shows the estimate beside the
+  // result without preprocessing twice). nullopt: every program came from
+  // the cache.
+  std::optional<BuildEstimate> estimate;
 };
 
 // A pass chosen for compilation: where it is in the IR and its keyword space.
@@ -197,7 +206,7 @@ class Compiler {
   // The cost of compile(shader, options) without compiling it all: see
   // BuildEstimate. The cache is not used, so the estimate is of a cold build.
   Result<BuildEstimate> estimate(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
-                                 Diagnostics& diags, size_t sample = 16) const;
+                                 Diagnostics& diags, size_t sample = kEstimateSample) const;
 
   const backend::Backend& backend() const { return backend_; }
 

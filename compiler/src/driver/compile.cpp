@@ -241,6 +241,46 @@ Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOp
   return counters.hits == 0;
 }
 
+namespace {
+
+// The evenly spread sample of `unique` (the tasks a build compiles) that an
+// estimate times.
+std::vector<size_t> estimate_sample(const std::vector<size_t>& unique, size_t sample) {
+  std::vector<size_t> picked;
+  const size_t n = std::min(std::max<size_t>(sample, 1), unique.size());
+  for (size_t i = 0; i < n; ++i) picked.push_back(unique[i * unique.size() / n]);
+  return picked;
+}
+
+// Fills in the sample's mean and the estimate from it.
+void finish_estimate(BuildEstimate& e, const Plan& plan, const std::vector<size_t>& picked) {
+  double total = 0;
+  for (size_t i : picked) total += plan.tasks[i].entry.seconds;
+  e.sampled = picked.size();
+  e.seconds_per_program = picked.empty() ? 0 : total / double(picked.size());
+  e.estimated_seconds = e.preprocess_seconds + double(e.unique) * e.seconds_per_program / double(e.jobs);
+}
+
+// What Compiler::estimate would have said of this build, from the build's
+// own numbers: its preprocessing time and the same sample's compile times
+// (programs the cache served are no sample of a cold build; with every
+// program from the cache there is no estimate).
+std::optional<BuildEstimate> estimate_of_build(const Plan& plan, const std::vector<size_t>& to_compile,
+                                               double preprocess_seconds, unsigned jobs, size_t sample) {
+  std::vector<size_t> compiled;
+  for (size_t i : to_compile) {
+    if (!plan.tasks[i].entry.cache_hit) compiled.push_back(i);
+  }
+  if (compiled.empty()) return std::nullopt;
+  BuildEstimate e{.programs = plan.tasks.size(), .unique = to_compile.size(),
+                  .preprocess_seconds = preprocess_seconds, .jobs = jobs};
+  for (const auto& key_list : plan.keys) e.variants += key_list.size();
+  finish_estimate(e, plan, estimate_sample(compiled, sample));
+  return e;
+}
+
+}  // namespace
+
 Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const CompileOptions& options,
                                         SourceMap& sources, Diagnostics& diags, size_t sample) const {
   auto passes = select_passes(shader, options, diags);
@@ -258,15 +298,9 @@ Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const Compile
   e.unique = driver::assign_compilers(*passes, plan.tasks);
   e.programs = plan.tasks.size();
   e.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::vector<size_t> unique = driver::compiling_tasks(plan), picked;
-  const size_t n = std::min(std::max<size_t>(sample, 1), unique.size());
-  for (size_t i = 0; i < n; ++i) picked.push_back(unique[i * unique.size() / n]);
+  std::vector<size_t> picked = estimate_sample(driver::compiling_tasks(plan), sample);
   driver::compile_tasks(ctx, plan, picked);
-  double total = 0;
-  for (size_t i : picked) total += plan.tasks[i].entry.seconds;
-  e.sampled = picked.size();
-  e.seconds_per_program = picked.empty() ? 0 : total / double(picked.size());
-  e.estimated_seconds = e.preprocess_seconds + double(e.unique) * e.seconds_per_program / double(ctx.jobs);
+  finish_estimate(e, plan, picked);
   return e;
 }
 
@@ -316,6 +350,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   out.stats.unique_spirv = pkg.spirv_blobs.size();
   out.stats.jobs = ctx.jobs;
   out.programs = program_records(plan.tasks, pkg);
+  out.estimate = estimate_of_build(plan, to_compile, phases.preprocess, ctx.jobs, kEstimateSample);
   phases.assemble = seconds_since_lap();
   out.stats.phases = phases;
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -144,7 +144,7 @@ code { background: #eef1f5; padding: 0 3px; }
     h += fmt::format("<h2>{}</h2>\n<p><code>{}</code>: {} programs, {} compiled, {:.3f} s</p>\n", xml_escape(r.name),
                      xml_escape(r.path), r.programs, r.compiled, r.compile_seconds);
     if (r.estimate) {
-      h += fmt::format("<p>Estimated before building: ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
+      h += fmt::format("<p>Estimate (as <code>--estimate</code> gives it before a build): ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
                        "from {} sampled).</p>\n",
                        r.estimate->estimated_seconds, r.estimate->jobs, r.estimate->unique,
                        1000 * r.estimate->seconds_per_program, r.estimate->sampled);

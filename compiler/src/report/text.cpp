@@ -75,7 +75,7 @@ std::string to_text(const std::vector<ShaderReport>& reports) {
     out += fmt::format("shader '{}' ({}): {} programs, {} compiled, {:.3f} s\n", r.name, r.path, r.programs,
                        r.compiled, r.compile_seconds);
     if (r.estimate) {
-      out += fmt::format("estimated before building: ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
+      out += fmt::format("estimate (as --estimate gives it before a build): ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
                          "from {} sampled; preprocessing {:.2f} s)\n",
                          r.estimate->estimated_seconds, r.estimate->jobs, r.estimate->unique,
                          1000 * r.estimate->seconds_per_program, r.estimate->sampled,

@@ -68,17 +68,12 @@ std::optional<report::ShaderReport> report_passes(const Compiler& compiler, cons
   Diagnostics selection_diags;  // the first selection, of every pass, reported these
   auto passes = compiler.select_passes(shader, options, selection_diags);
   if (!passes) return std::nullopt;
-  std::optional<BuildEstimate> estimate;
-  if (!counted) {
-    Diagnostics estimate_diags;  // the build reports the same problems
-    if (auto e = compiler.estimate(shader, options, sources, estimate_diags)) estimate = *e;
-  }
   auto compiled = compiler.compile(shader, options, sources, diags);
   if (!compiled) return std::nullopt;
   read.insert(read.end(), compiled->dependencies.begin(), compiled->dependencies.end());
   report_options.counted_only = counted;
   report::ShaderReport r = report::build_report(shader, *passes, *compiled, sources, report_options);
-  r.estimate = estimate;
+  if (!counted) r.estimate = compiled->estimate;
   return r;
 }
 

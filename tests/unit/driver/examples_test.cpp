@@ -223,5 +223,34 @@ TEST(DriverEstimateTest, CountsTheBuildAndTimesASample) {
   EXPECT_EQ(all->sampled, 50u) << "a sample never exceeds the programs";
 }
 
+// A build carries the estimate --estimate would have given, from its own
+// timings: the same counts, a sample of 16; none when the cache served all.
+TEST(DriverEstimateTest, ABuildCarriesItsOwnEstimate) {
+  Compiler compiler;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = compiler.load(example("Keywords.shader"), sources, diags);
+  ASSERT_TRUE(shader);
+  std::string cache = (std::filesystem::temp_directory_path() / "facet_build_estimate_cache").string();
+  std::filesystem::remove_all(cache);
+  auto cold = compiler.compile(*shader, {.jobs = 2, .cache_dir = cache}, sources, diags);
+  ASSERT_TRUE(cold) << render_text(diags, sources);
+  ASSERT_TRUE(cold->estimate);
+  EXPECT_EQ(cold->estimate->variants, 48u);
+  EXPECT_EQ(cold->estimate->programs, 64u);
+  EXPECT_EQ(cold->estimate->unique, 50u);
+  EXPECT_EQ(cold->estimate->sampled, kEstimateSample);
+  EXPECT_EQ(cold->estimate->jobs, 2u);
+  EXPECT_GT(cold->estimate->seconds_per_program, 0);
+  EXPECT_DOUBLE_EQ(cold->estimate->preprocess_seconds, cold->stats.phases.preprocess);
+  EXPECT_NEAR(cold->estimate->estimated_seconds,
+              cold->estimate->preprocess_seconds + 50 * cold->estimate->seconds_per_program / 2, 1e-9);
+  auto warm = compiler.compile(*shader, {.jobs = 2, .cache_dir = cache}, sources, diags);
+  ASSERT_TRUE(warm);
+  EXPECT_EQ(warm->stats.cache_hits, 50u);
+  EXPECT_FALSE(warm->estimate) << "cache reads are no sample of a cold build";
+  std::filesystem::remove_all(cache);
+}
+
 }  // namespace
 }  // namespace facet

@@ -16,7 +16,7 @@ TEST_F(FacetcTest, ReportFormatsAndFolders) {
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("shader 'Examples/Keywords'"));
   EXPECT_THAT(text.out, HasSubstr("what if: remove 'multi_compile_fog _ FOG_LINEAR FOG_EXP FOG_EXP2'"));
-  EXPECT_THAT(text.out, HasSubstr("estimated before building: ~"));
+  EXPECT_THAT(text.out, HasSubstr("estimate (as --estimate gives it before a build): ~"));
   EXPECT_THAT(text.out, HasSubstr("(50 programs to compile at"));
   FacetcRun estimate = facetc({"--estimate", example("Keywords.shader")});
   ASSERT_EQ(estimate.exit_code, 0) << estimate.err;
