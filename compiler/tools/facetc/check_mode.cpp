@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
 #include <chrono>
 #include <condition_variable>
 #include <ctime>
@@ -190,9 +191,11 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
   auto started = std::chrono::steady_clock::now();
   std::string timestamp = utc_timestamp();
   unsigned workers = worker_count(args.jobs, paths.size());
-  // Several shaders at once get a thread each; one shader alone gets -j's
-  // threads for its variants.
-  unsigned inner_jobs = workers > 1 ? 1 : args.jobs;
+  // -j's threads are shared out: as many shaders at once as there are
+  // threads (or shaders), and each gets its share for its variants, so that
+  // two shaders of thousands of variants use all sixteen threads of -j16.
+  unsigned threads_in_all = worker_count(args.jobs, SIZE_MAX);
+  unsigned inner_jobs = std::max(1u, threads_in_all / workers);
   std::vector<std::optional<Checked>> results(paths.size());
   std::mutex mutex;
   std::condition_variable done;

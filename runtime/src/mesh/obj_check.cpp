@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cfloat>
+#include <climits>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -122,6 +123,23 @@ std::optional<ObjProblem> check_element(const std::vector<Word>& words, size_t m
   return std::nullopt;
 }
 
+// vw VERTEX JOINT WEIGHT ...: tinyobjloader's skin weights, which facet
+// does not use but tinyobjloader reads, converting each joint number to an
+// int unchecked (1e30 is undefined behaviour): every number must fit one.
+std::optional<ObjProblem> check_skin_weights(const std::vector<Word>& words) {
+  if (words.size() < 2) return at(words[0], "a skin weight line needs a vertex index");
+  for (size_t i = 1; i < words.size(); ++i) {
+    if (!is_decimal(words[i].text)) return at(words[i], fmt::format("'{}' is not a number", words[i].text));
+    double value = std::strtod(std::string(words[i].text).c_str(), nullptr);
+    if (!std::isfinite(value) || std::abs(value) > double(INT_MAX)) {
+      return at(words[i], fmt::format("'{}' is out of range (the numbers of a skin weight line must fit an int, at "
+                                      "most {})",
+                                      words[i].text, INT_MAX));
+    }
+  }
+  return std::nullopt;
+}
+
 // One corner: v, v/vt, v//vn or v/vt/vn.
 std::optional<ObjProblem> check_corner(const Word& word, const Counts& counts) {
   std::string_view text = word.text;
@@ -177,6 +195,7 @@ std::optional<ObjProblem> check_line(std::string_view line, Counts& counts, cons
   if (keyword == "vt") return check_element(words, 1, "a texture coordinate", counts.texcoords, limits);
   if (keyword == "vn") return check_element(words, 3, "a normal", counts.normals, limits);
   if (keyword == "f") return check_face(words, counts, limits);
+  if (keyword == "vw") return check_skin_weights(words);
   return std::nullopt;  // comments, groups, materials, lines and points: nothing the mesh reads
 }
 

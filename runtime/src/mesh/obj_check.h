@@ -1,8 +1,9 @@
 // The checks an OBJ text passes before tinyobjloader reads it. tinyobjloader
 // trusts its input: it resolves face indices without looking at how many
 // vertices exist, reads numbers with atoi, and triangulates polygons in
-// O(corners^3). So every line that tinyobjloader turns into data (v, vt, vn
-// and f) is read here first, the way tinyobjloader splits it (lines end at
+// O(corners^3). So every line that tinyobjloader turns into data (v, vt, vn,
+// f, and the skin weights vw, whose joint numbers it casts to int unchecked)
+// is read here first, the way tinyobjloader splits it (lines end at
 // \n, \r\n or \r; words are separated by spaces and tabs), and the first
 // problem comes back with its line and column. Text that passes never makes
 // tinyobjloader index out of bounds.

@@ -98,6 +98,14 @@ const ObjCase kObjCases[] = {
     {"vertex_of_two_numbers", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "1:1: a vertex needs 3 numbers, this one has 2"},
     {"bounds_past_float", "v -3e38 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n",
      " the mesh is too large (its bounding sphere does not fit a float)"},
+    // fuzz_obj found these: tinyobjloader casts a skin weight's joint number to int unchecked.
+    {"skin_weight_joint_past_int", std::string(kTriangle) + "f 1 2 3\nvw 0 1e30 0.5\n",
+     "5:6: '1e30' is out of range (the numbers of a skin weight line must fit an int"},
+    {"skin_weight_joint_of_many_digits", std::string(kTriangle) + "f 1 2 3\nvw 0 0777777777777777777777 1\n",
+     "5:6: '0777777777777777777777' is out of range"},
+    {"skin_weight_infinite_joint", std::string(kTriangle) + "f 1 2 3\nvw 0 inf 1\n", "5:6: 'inf' is not a number"},
+    {"skin_weight_without_vertex", std::string(kTriangle) + "f 1 2 3\nvw\t\n",
+     "5:1: a skin weight line needs a vertex index"},
     {"crlf_and_cr_lines", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\r\nf 1 2 4\r\n",
      "4:7: face index 4 refers past the 3 vertices defined so far"},
 };
@@ -132,6 +140,14 @@ TEST(HostileObjControl, RelativeIndicesCommentsAndQuadsStillLoad) {
   EXPECT_EQ(mesh->vertices[6].position, (std::array<float, 3>{0, 0, 0}));
   EXPECT_EQ(mesh->vertices[8].position, (std::array<float, 3>{1, 1, 0}));
   EXPECT_EQ(mesh->vertices[8].normal, (std::array<float, 3>{0, 0, -1}));
+}
+
+TEST(HostileObjControl, SkinWeightsThatFitAnIntStillLoad) {
+  std::string obj = write_file("weights.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 0 0.25 1 0.75\nvw 2 3 1\nf 1 2 3\n");
+  MeshError error;
+  std::optional<MeshData> mesh = load_obj(obj, error);
+  ASSERT_TRUE(mesh) << error.message;
+  EXPECT_EQ(mesh->indices.size(), 3u);
 }
 
 // ---------------------------------------------------------------- scene JSON
