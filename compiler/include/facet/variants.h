@@ -29,7 +29,8 @@ enum class KeywordDirective : uint8_t { multi_compile, shader_feature, dynamic_b
 // Invariant: keywords are distinct; "" is the "no keyword" state and, when
 // present, is listed where it was declared ("_" / "__" / implicit first
 // entry of a single-keyword shader_feature). A set holds at least one
-// non-empty keyword, and no non-empty keyword is in two sets of a space.
+// non-empty keyword; a keyword two sets of a space declare puts both sets
+// in one KeywordCombinations entry (docs/variants.md §1, rules 8 and 9).
 struct KeywordSet {
   KeywordDirective directive = KeywordDirective::multi_compile;
   bool local = false;

@@ -339,6 +339,7 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
     // Matrix swizzles again: a macro may build one ("input.a" with a = _22_23_24).
     std::string text = rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed)));
     reduced = with_static_initializers_in_entry(without_unreachable_functions(text, entry), entry);
+    if (stage == Stage::fragment) reduced = with_front_facing_as_bool(reduced, entry);
     out.preprocessed = std::move(text);
     program_text = &reduced;
     if (std::optional<DeclarationProblem> problem = find_declaration_problem(reduced)) {

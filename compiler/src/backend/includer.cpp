@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace facet::backend {
 namespace fs = std::filesystem;
@@ -73,9 +72,18 @@ std::optional<std::string> read_text_file(const std::string& path) {
   if (!fs::is_regular_file(path, ec)) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // Read in one piece (the file may grow or shrink meanwhile: what was read counts).
+  std::string text;
+  in.seekg(0, std::ios::end);
+  std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size > 0) {
+    text.resize(size_t(size));
+    in.read(text.data(), size);
+    text.resize(size_t(in.gcount()));
+  }
+  if (in.bad()) return std::nullopt;
+  return text;
 }
 
 FileIncluder::FileIncluder(const BackendOptions& options, std::string stdlib_dir)

@@ -16,15 +16,22 @@ uint64_t mul(uint64_t x, uint64_t y) { return x != 0 && y > kSaturated / x ? kSa
 bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// The logical lines of a text (continuations joined) as tokens, outside
-// comments; a string literal is one token.
-std::vector<std::vector<MacroBudget::Token>> token_lines(std::string_view text) {
-  std::vector<std::vector<MacroBudget::Token>> lines(1);
+// The logical lines of a text (continuations joined) outside comments, as
+// one run of tokens: a line is [lines[k], lines[k + 1]) of `tokens`. A
+// string literal is one token.
+struct TokenLines {
+  std::vector<MacroBudget::Token> tokens;
+  std::vector<size_t> starts{0};
+};
+
+TokenLines token_lines(std::string_view text) {
+  TokenLines out;
+  out.tokens.reserve(text.size() / 4);
   for (size_t i = 0; i < text.size();) {
     char c = text[i];
     char next = i + 1 < text.size() ? text[i + 1] : '\0';
     if (c == '\n') {
-      lines.emplace_back();
+      out.starts.push_back(out.tokens.size());
       ++i;
     } else if (c == '\\' && (next == '\n' || (next == '\r' && i + 2 < text.size() && text[i + 2] == '\n'))) {
       i += next == '\n' ? 2 : 3;
@@ -43,10 +50,11 @@ std::vector<std::vector<MacroBudget::Token>> token_lines(std::string_view text) 
         while (i < text.size() && text[i] != '"' && text[i] != '\n') i += text[i] == '\\' ? 2 : 1;
         i = std::min(i + 1, text.size());
       }
-      lines.back().push_back({text.substr(begin, i - begin), begin});
+      out.tokens.push_back({text.substr(begin, i - begin), begin});
     }
   }
-  return lines;
+  out.starts.push_back(out.tokens.size());
+  return out;
 }
 
 std::vector<std::string_view> split_body(const std::string& body) {
@@ -85,24 +93,23 @@ std::string MacroBudget::too_big(std::string_view what, uint64_t bytes) const {
 }
 
 std::optional<MacroExcess> MacroBudget::add_text(std::string_view text) {
-  std::vector<Token> code;
-  for (const std::vector<Token>& line : token_lines(text)) {
-    if (line.empty()) continue;
-    if (line[0].text != "#") {
-      code.insert(code.end(), line.begin(), line.end());
-      continue;
-    }
-    // A directive ends the code before it (a call's arguments do not span one).
-    if (auto excess = add_code(code)) return excess;
-    code.clear();
-    if (line.size() >= 3 && line[1].text == "define") {
-      if (auto excess = define(line)) return excess;
+  const TokenLines lines = token_lines(text);
+  std::span<const Token> all(lines.tokens);
+  // The code since the last directive: a call's arguments do not span one.
+  size_t code_begin = 0;
+  for (size_t k = 0; k + 1 < lines.starts.size(); ++k) {
+    size_t begin = lines.starts[k], end = lines.starts[k + 1];
+    if (begin == end || all[begin].text != "#") continue;
+    if (auto excess = add_code(all.subspan(code_begin, begin - code_begin))) return excess;
+    code_begin = end;
+    if (end - begin >= 3 && all[begin + 1].text == "define") {
+      if (auto excess = define(all.subspan(begin, end - begin))) return excess;
     }
   }
-  return add_code(code);
+  return add_code(all.subspan(code_begin));
 }
 
-std::optional<MacroExcess> MacroBudget::define(const std::vector<Token>& line) {
+std::optional<MacroExcess> MacroBudget::define(std::span<const Token> line) {
   const Token& name = line[2];
   if (!ident_start(name.text[0])) return std::nullopt;
   Definition d;
@@ -121,7 +128,9 @@ std::optional<MacroExcess> MacroBudget::define(const std::vector<Token>& line) {
   }
   // Memos that may count this name as a plain token go stale.
   if (referenced_.count(name.text)) ++generation_;
-  std::vector<Definition>& defs = macros_[std::string(name.text)];
+  auto slot = macros_.find(name.text);
+  if (slot == macros_.end()) slot = macros_.emplace(std::string(name.text), std::vector<Definition>{}).first;
+  std::vector<Definition>& defs = slot->second;
   for (const Definition& old : defs) {
     if (old.function_like == d.function_like && old.params == d.params && old.body == d.body) return std::nullopt;
   }
@@ -138,7 +147,7 @@ std::optional<MacroExcess> MacroBudget::define(const std::vector<Token>& line) {
   return std::nullopt;
 }
 
-std::optional<MacroExcess> MacroBudget::add_code(const std::vector<Token>& code) {
+std::optional<MacroExcess> MacroBudget::add_code(std::span<const Token> code) {
   std::vector<std::string_view> tokens;
   tokens.reserve(code.size());
   for (const Token& t : code) tokens.push_back(t.text);
@@ -196,7 +205,7 @@ size_t MacroBudget::measure_one(const std::vector<std::string_view>& tokens, siz
   }
   size = {token.size() + 1, 0};
   if (!ident_start(token[0])) return i + 1;
-  if (owner) referenced_.emplace(token);
+  if (owner && referenced_.find(token) == referenced_.end()) referenced_.emplace(token);
   auto found = macros_.find(token);
   if (found == macros_.end()) return i + 1;
   // Deeper than the limit: reported as such, without measuring on.

@@ -22,11 +22,12 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <optional>
-#include <set>
+#include <span>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace facet::backend {
@@ -71,8 +72,8 @@ class MacroBudget {
   };
 
  private:
-  std::optional<MacroExcess> define(const std::vector<Token>& line);
-  std::optional<MacroExcess> add_code(const std::vector<Token>& code);
+  std::optional<MacroExcess> define(std::span<const Token> line);
+  std::optional<MacroExcess> add_code(std::span<const Token> code);
   Size measure(Definition& d, int& depth);
   size_t measure_one(const std::vector<std::string_view>& tokens, size_t i, size_t end, const Definition* owner,
                      Size& size, int& depth);
@@ -81,9 +82,15 @@ class MacroBudget {
   uint64_t max_bytes_;
   uint64_t total_ = 0;
   uint64_t generation_ = 0;  // bumped by every #define: memos go stale
-  std::map<std::string, std::vector<Definition>, std::less<>> macros_;
+  // Looked up for every identifier of the program: hashed, and by
+  // string_view without a copy.
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, std::vector<Definition>, NameHash, std::equal_to<>> macros_;
   // Names some macro body named: defining one of them makes memos stale.
-  std::set<std::string, std::less<>> referenced_;
+  std::unordered_set<std::string, NameHash, std::equal_to<>> referenced_;
   int recursion_ = 0;
 };
 

@@ -255,4 +255,101 @@ std::string with_static_initializers_in_entry(const std::string& text, const std
   return text;
 }
 
+namespace {
+
+bool iequal(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return (x | 0x20) == (y | 0x20);
+         });
+}
+
+// "[in] TYPE NAME : SEMANTIC" of one parameter: its type, name and
+// semantic, or nullopt for any other shape.
+struct FacingParameter {
+  std::string type, name;
+  bool vface = false;  // VFACE (+1/-1), or SV_IsFrontFace (1/0)
+};
+
+std::optional<FacingParameter> facing_parameter(std::string_view p) {
+  std::vector<std::string_view> words;
+  for (size_t i = 0; i < p.size();) {
+    if (ident_char(p[i])) {
+      size_t j = i;
+      while (j < p.size() && ident_char(p[j])) ++j;
+      words.push_back(p.substr(i, j - i));
+      i = j;
+    } else if (p[i] == ':') {
+      words.push_back(":");
+      ++i;
+    } else if (p[i] == ' ' || p[i] == '\n' || p[i] == '\t' || p[i] == '\r') {
+      ++i;
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (!words.empty() && words[0] == "in") words.erase(words.begin());
+  if (words.size() != 4 || words[2] != ":" || !ident_start(words[1][0])) return std::nullopt;
+  bool vface = iequal(words[3], "VFACE");
+  if (!vface && !iequal(words[3], "SV_IsFrontFace")) return std::nullopt;
+  if (words[0] == "bool") return std::nullopt;
+  return FacingParameter{std::string(words[0]), std::string(words[1]), vface};
+}
+
+}  // namespace
+
+std::string with_front_facing_as_bool(const std::string& text, const std::string& entry) {
+  std::vector<Item> items;
+  if (!split_items(text, items)) return text;
+  auto found = std::find_if(items.begin(), items.end(), [&](const Item& item) { return item.function == entry; });
+  if (found == items.end()) return text;
+  // The entry's parameter list: from the '(' after its name to its match.
+  std::string_view item(text.data() + found->begin, found->end - found->begin);
+  size_t name = std::string_view::npos;
+  for (size_t at = item.find(entry); at != std::string_view::npos; at = item.find(entry, at + 1)) {
+    bool whole = (at == 0 || !ident_char(item[at - 1])) && at + entry.size() < item.size() &&
+                 !ident_char(item[at + entry.size()]);
+    size_t open = item.find_first_not_of(" \n\t", at + entry.size());
+    if (whole && open != std::string_view::npos && item[open] == '(') {
+      name = open;
+      break;
+    }
+  }
+  if (name == std::string_view::npos) return text;
+  std::string out = text;
+  std::string prologue;
+  int depth = 0;
+  size_t param_begin = name + 1, body = std::string_view::npos;
+  std::vector<std::pair<size_t, size_t>> params;
+  for (size_t i = name; i < item.size(); ++i) {
+    char c = item[i];
+    if (c == '(' || c == '[' || c == '<') ++depth;
+    if (c == ')' || c == ']' || c == '>') --depth;
+    if ((c == ',' && depth == 1) || (c == ')' && depth == 0)) {
+      params.emplace_back(param_begin, i);
+      param_begin = i + 1;
+    }
+    if (c == ')' && depth == 0) {
+      body = item.find('{', i);
+      break;
+    }
+  }
+  if (body == std::string_view::npos) return text;
+  // Replaced from the last, so that earlier offsets hold; each replacement
+  // keeps the parameter's line breaks.
+  for (auto it = params.rbegin(); it != params.rend(); ++it) {
+    std::string_view p = item.substr(it->first, it->second - it->first);
+    std::optional<FacingParameter> facing = facing_parameter(p);
+    if (!facing) continue;
+    std::string flag = facing->name + "_facet_front";
+    std::string replacement = " bool " + flag + " : SV_IsFrontFace";
+    for (char c : p) if (c == '\n') replacement += '\n';
+    prologue += " " + facing->type + " " + facing->name + " = " + flag + (facing->vface ? " ? 1 : -1;" : " ? 1 : 0;");
+    out.replace(found->begin + it->first, p.size(), replacement);
+    body += replacement.size() - p.size();
+  }
+  if (prologue.empty()) return text;
+  out.insert(found->begin + body + 1, prologue);
+  return out;
+}
+
 }  // namespace facet

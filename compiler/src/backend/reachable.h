@@ -32,4 +32,13 @@ std::string without_unreachable_functions(const std::string& text, const std::st
 // order, on the line of its '{'. Text without `entry` is returned unchanged.
 std::string with_static_initializers_in_entry(const std::string& text, const std::string& entry);
 
+// A fragment entry point's "TYPE NAME : VFACE" or non-bool "TYPE NAME :
+// SV_IsFrontFace" parameter: glslang makes the first a plain varying that no
+// vertex stage writes and the second a FrontFacing built-in of the wrong
+// type (invalid SPIR-V). Both become "bool NAME_facet_front :
+// SV_IsFrontFace", and the body starts with "TYPE NAME = NAME_facet_front
+// ? 1 : -1;" (VFACE's sign) or "? 1 : 0;". Lines are kept. Text without
+// such a parameter is returned unchanged.
+std::string with_front_facing_as_bool(const std::string& text, const std::string& entry);
+
 }  // namespace facet

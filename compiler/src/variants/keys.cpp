@@ -28,7 +28,9 @@ std::vector<std::string> stage_keywords(const KeywordSpace& space, const Variant
   for (size_t s = 0; s < space.sets.size(); ++s) {
     if (!space.sets[s].applies_to(stage)) continue;
     const std::string& keyword = chosen_keyword(space, key, s);
-    if (!keyword.empty()) keywords.push_back(keyword);
+    // Sets sharing a keyword both choose it: it is listed once.
+    bool listed = std::find(keywords.begin(), keywords.end(), keyword) != keywords.end();
+    if (!keyword.empty() && !listed) keywords.push_back(keyword);
   }
   return keywords;
 }
@@ -38,7 +40,7 @@ std::vector<std::string> all_keywords(const KeywordSpace& space, const VariantKe
   std::vector<std::string> keywords;
   for (size_t s = 0; s < space.sets.size(); ++s) {
     const std::string& keyword = chosen_keyword(space, key, s);
-    // A keyword that sets of different stages share is listed once.
+    // A keyword that sets share is listed once.
     bool listed = std::find(keywords.begin(), keywords.end(), keyword) != keywords.end();
     if (!keyword.empty() && !listed) keywords.push_back(keyword);
   }

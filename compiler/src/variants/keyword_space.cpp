@@ -1,6 +1,8 @@
 // build_keyword_space: the keyword pragmas of one program, read with Unity's
 // rules (docs/variants.md). Every bad pragma is reported before
 // the build fails, so one run shows all of them.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -127,6 +129,9 @@ std::string join(const std::vector<std::string>& items, std::string_view separat
   return text;
 }
 
+// The most combinations sets sharing keywords are combined into.
+constexpr size_t kMaxCombinedChoices = size_t(1) << 20;
+
 class SpaceBuilder {
  public:
   explicit SpaceBuilder(Diagnostics& diags) : diags_(diags) {}
@@ -152,6 +157,8 @@ class SpaceBuilder {
   std::optional<std::vector<std::string>> read_keywords(const ir::Pragma& pragma);
   bool claim(const std::string& keyword, SourceSpan span, bool dynamic, StageMask stages = kAllStages);
   void tie_shared_keywords(size_t set, const std::vector<std::pair<std::string, size_t>>& shared);
+  void combine_overlapping_sets(size_t set, const std::vector<size_t>& earlier);
+  void combine_pending_overlaps();
   void add_set(KeywordSet set);
 
   Diagnostics& diags_;
@@ -159,6 +166,9 @@ class SpaceBuilder {
   std::map<std::string, Declaration> declared_;  // keyword -> its first pragma
   std::map<std::string, SourceSpan> skip_spans_;  // skip_variants keyword -> its pragma
   std::vector<std::pair<std::string, size_t>> shared_;  // of the set being added: keyword, earlier set
+  std::vector<size_t> overlapping_;  // of the set being added: earlier sets sharing a keyword
+  // Sets added with overlaps, combined once their pragma's own combinations exist.
+  std::vector<std::pair<size_t, std::vector<size_t>>> pending_overlaps_;
 };
 
 void SpaceBuilder::add(const ir::Pragma& pragma) {
@@ -223,6 +233,7 @@ void SpaceBuilder::add_keyword_pragma(const ir::Pragma& pragma, const DirectiveF
     keywords->insert(keywords->begin(), std::string());
   }
   add_set(KeywordSet{form.directive, form.local, form.stages, std::move(*keywords), pragma.name, pragma.span});
+  combine_pending_overlaps();
 }
 
 void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
@@ -279,6 +290,7 @@ void SpaceBuilder::add_shortcut(const ir::Pragma& pragma) {
     }
   }
   if (curated) add_combinations(pragma, added, shortcut->combinations);
+  combine_pending_overlaps();
 }
 
 // The listed combinations of a curated shortcut over the sets it added, as
@@ -366,6 +378,16 @@ bool SpaceBuilder::claim(const std::string& keyword, SourceSpan span, bool dynam
     shared_.emplace_back(keyword, d.set);
     return true;
   }
+  // Sets of one stage may share a keyword too (`multi_compile _ VERTEXLIGHT_ON`
+  // beside `multi_compile_fwdbase`), and so may a set and a shortcut's set of
+  // another stage: as in Unity, a variant enables the union
+  // of its sets' choices, and choices with the same union are one variant
+  // (combine_overlapping_sets).
+  bool overlapping = !dynamic && !d.dynamic && d.set < space_.sets.size();
+  if (overlapping) {
+    if (std::find(overlapping_.begin(), overlapping_.end(), d.set) == overlapping_.end()) overlapping_.push_back(d.set);
+    return true;
+  }
   SourceSpan first = it->second.span;
   diags_.add(DiagId::pragma_keyword_in_two_sets, span,
              "keyword '" + keyword + "' is already declared by another keyword pragma; a keyword belongs to one set")
@@ -398,12 +420,102 @@ void SpaceBuilder::add_set(KeywordSet set) {
     return;
   }
   shared_.clear();
+  overlapping_.clear();
   std::erase_if(set.keywords,
                 [&](const std::string& k) { return !k.empty() && !claim(k, set.span, false, set.stages); });
   bool any = std::any_of(set.keywords.begin(), set.keywords.end(), [](const std::string& k) { return !k.empty(); });
   if (!any) return;
   space_.sets.push_back(std::move(set));
   if (!shared_.empty()) tie_shared_keywords(space_.sets.size() - 1, shared_);
+  if (!overlapping_.empty()) pending_overlaps_.emplace_back(space_.sets.size() - 1, overlapping_);
+}
+
+void SpaceBuilder::combine_pending_overlaps() {
+  for (const auto& [set, earlier] : pending_overlaps_) combine_overlapping_sets(set, earlier);
+  pending_overlaps_.clear();
+}
+
+// The new set `set` shares keywords with earlier sets of its stages. It
+// joins them (and every set of a combination group holding one of them) in
+// one group whose choices are the distinct unions of keywords: of the
+// choices giving one union, the one enabling the most sets is kept, so that
+// a shared keyword is on in every set declaring it, in every stage.
+void SpaceBuilder::combine_overlapping_sets(size_t set, const std::vector<size_t>& earlier) {
+  std::set<size_t> members(earlier.begin(), earlier.end());
+  members.insert(set);
+  std::vector<size_t> groups;  // indices into space_.combinations
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (size_t g = 0; g < space_.combinations.size(); ++g) {
+      const KeywordCombinations& group = space_.combinations[g];
+      bool touches = std::any_of(group.sets.begin(), group.sets.end(), [&](size_t s) { return members.count(s); });
+      if (!touches || std::find(groups.begin(), groups.end(), g) != groups.end()) continue;
+      groups.push_back(g);
+      members.insert(group.sets.begin(), group.sets.end());
+      grew = true;
+    }
+  }
+  const std::vector<size_t> sets(members.begin(), members.end());
+  auto position = [&](size_t s) { return size_t(std::find(sets.begin(), sets.end(), s) - sets.begin()); };
+  // Every choice of the members: each group's listed combinations times the free sets.
+  std::vector<std::vector<uint32_t>> rows{std::vector<uint32_t>(sets.size(), 0)};
+  bool too_many = false;
+  auto expand = [&](auto&& each_choice) {
+    std::vector<std::vector<uint32_t>> next;
+    for (const std::vector<uint32_t>& row : rows) {
+      each_choice(row, next);
+      too_many = too_many || next.size() > kMaxCombinedChoices;
+      if (too_many) return;
+    }
+    rows = std::move(next);
+  };
+  std::set<size_t> grouped;
+  for (size_t g : groups) {
+    const KeywordCombinations& group = space_.combinations[g];
+    grouped.insert(group.sets.begin(), group.sets.end());
+    expand([&](const std::vector<uint32_t>& row, std::vector<std::vector<uint32_t>>& next) {
+      for (const std::vector<uint32_t>& choice : group.choices) {
+        std::vector<uint32_t> r = row;
+        for (size_t i = 0; i < choice.size(); ++i) r[position(group.sets[i])] = choice[i];
+        next.push_back(std::move(r));
+      }
+    });
+  }
+  for (size_t s : sets) {
+    if (grouped.count(s)) continue;
+    expand([&](const std::vector<uint32_t>& row, std::vector<std::vector<uint32_t>>& next) {
+      for (uint32_t i = 0; i < space_.sets[s].keywords.size(); ++i) {
+        std::vector<uint32_t> r = row;
+        r[position(s)] = i;
+        next.push_back(std::move(r));
+      }
+    });
+  }
+  const KeywordSet& added = space_.sets[set];
+  if (too_many) {
+    diags_.add(DiagId::pragma_keyword_in_two_sets, added.span,
+               fmt::format("'#pragma {}' shares keywords with earlier sets; together they have more than {} "
+                           "combinations, too many to combine",
+                           added.pragma, kMaxCombinedChoices));
+    return;
+  }
+  std::map<std::set<std::string>, std::pair<size_t, std::vector<uint32_t>>> by_union;  // union -> (sets on, choice)
+  for (const std::vector<uint32_t>& row : rows) {
+    std::set<std::string> keywords;
+    size_t on = 0;
+    for (size_t i = 0; i < sets.size(); ++i) {
+      const std::string& k = space_.sets[sets[i]].keywords[row[i]];
+      if (!k.empty()) keywords.insert(k), ++on;
+    }
+    auto [it, inserted] = by_union.try_emplace(std::move(keywords), on, row);
+    if (!inserted && on > it->second.first) it->second = {on, row};
+  }
+  KeywordCombinations combined{sets, {}, added.pragma, added.span};
+  for (auto& [keywords, best] : by_union) combined.choices.push_back(std::move(best.second));
+  std::sort(combined.choices.begin(), combined.choices.end());
+  std::sort(groups.rbegin(), groups.rend());
+  for (size_t g : groups) space_.combinations.erase(space_.combinations.begin() + long(g));
+  space_.combinations.push_back(std::move(combined));
 }
 
 // The combinations of the new set `set` and the earlier set holding the same

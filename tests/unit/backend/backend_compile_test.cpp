@@ -183,6 +183,27 @@ TEST_F(BackendCompileTest, Dx9StyleCodeCompiles) {
   EXPECT_FALSE(diags_.has_errors()) << diagnostics(t);
 }
 
+// glslang makes "float f : VFACE" a varying no vertex stage writes, and a
+// "uint f : SV_IsFrontFace" built-in invalid SPIR-V: both read FrontFacing.
+TEST_F(BackendCompileTest, FrontFacingParametersOfAnyTypeReadTheBuiltIn) {
+  for (const char* parameter : {"float facing : VFACE", "uint facing : SV_IsFrontFace", "half facing : VFACE",
+                                "bool facing : SV_IsFrontFace"}) {
+    TestShader t = testing::make_shader("facing.shader", std::string(R"(Shader "T" { SubShader { Pass { Cull Off
+      CGPROGRAM
+      #pragma vertex vert
+      #pragma fragment frag
+      float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+      float4 frag(float4 p : SV_POSITION, )") + parameter + R"() : SV_Target { return facing > 0 ? 1 : 0; }
+      ENDCG } } })");
+    diags_ = {};
+    auto compiled = compile(t, Stage::fragment);
+    ASSERT_TRUE(compiled) << parameter << "\n" << diagnostics(t);
+    std::string text = disassemble(compiled->spirv);
+    EXPECT_NE(text.find("BuiltIn FrontFacing"), std::string::npos) << parameter << "\n" << text;
+    EXPECT_TRUE(compiled->reflection.inputs.empty()) << parameter;  // no varying left behind
+  }
+}
+
 // ForwardAdd/ForwardBase light keywords with Lighting.cginc and AutoLight.cginc.
 class BackendLightKeywordTest : public BackendCompileTest,
                                 public ::testing::WithParamInterface<std::vector<std::string>> {};

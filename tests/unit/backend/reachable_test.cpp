@@ -90,5 +90,32 @@ TEST(ReachableTest, StaticInitialisersThatCallFunctionsRunFirstInTheEntryPoint) 
   EXPECT_EQ(with_static_initializers_in_entry(text, "vert"), text);
 }
 
+TEST(FrontFacingTest, AVfaceParameterBecomesTheBoolBuiltInAndItsSign) {
+  std::string text = "float4 frag(float4 p : SV_POSITION, float facing : VFACE) : SV_Target {\n"
+                     "  return facing > 0 ? 1 : 0; }\n";
+  std::string out = with_front_facing_as_bool(text, "frag");
+  EXPECT_NE(out.find("bool facing_facet_front : SV_IsFrontFace)"), std::string::npos) << out;
+  EXPECT_NE(out.find("{ float facing = facing_facet_front ? 1 : -1;"), std::string::npos) << out;
+  EXPECT_EQ(out.find("VFACE"), std::string::npos) << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(FrontFacingTest, ANonBoolFrontFaceParameterGetsOneOrZero) {
+  std::string text = "float4 frag(in uint face\n : SV_ISFRONTFACE, float4 p : SV_POSITION) : SV_Target { return face; }\n";
+  std::string out = with_front_facing_as_bool(text, "frag");
+  EXPECT_NE(out.find("bool face_facet_front : SV_IsFrontFace\n, float4 p"), std::string::npos) << out;
+  EXPECT_NE(out.find("{ uint face = face_facet_front ? 1 : 0;"), std::string::npos) << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(FrontFacingTest, ABoolParameterOtherFunctionsAndOtherSemanticsStayAsTheyAre) {
+  for (const char* text : {"float4 frag(bool f : SV_IsFrontFace) : SV_Target { return f; }\n",
+                           "float4 other(float f : VFACE) { return f; }\nfloat4 frag() : SV_Target { return 1; }\n",
+                           "float4 frag(float f : TEXCOORD0) : SV_Target { return f; }\n",
+                           "float4 frag(float f : VFACE : SV_Target { return f; }\n"}) {
+    EXPECT_EQ(with_front_facing_as_bool(text, "frag"), text);
+  }
+}
+
 }  // namespace
 }  // namespace facet

@@ -115,15 +115,15 @@ TEST_F(VariantsBuildTest, DuplicateLoneShaderFeatureStillGetsOffState) {
   EXPECT_EQ(space.sets[0].keywords, (Keywords{"", "A"}));
 }
 
-TEST_F(VariantsBuildTest, KeywordInTwoSetsIsAnErrorWithNoteAtTheFirst) {
-  Lines lines = {"multi_compile _ A B", "shader_feature C A"};
-  build_fails(lines);
-  const Diagnostic& d = first(DiagId::pragma_keyword_in_two_sets);
-  EXPECT_EQ(d.span, line_span(lines, 1));
-  EXPECT_EQ(d.message, "keyword 'A' is already declared by another keyword pragma; a keyword belongs to one set");
-  ASSERT_EQ(d.notes.size(), 1u);
-  EXPECT_EQ(d.notes[0].span, line_span(lines, 0));
-  EXPECT_EQ(d.notes[0].message, "'A' was first declared here");
+TEST_F(VariantsBuildTest, AKeywordInTwoSetsJoinsThemInOneCombinationGroup) {
+  KeywordSpace space = build({"multi_compile _ A B", "shader_feature C A"});
+  EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 0u);
+  ASSERT_EQ(space.sets.size(), 2u);
+  EXPECT_EQ(space.sets[1].keywords, (Keywords{"C", "A"}));
+  ASSERT_EQ(space.combinations.size(), 1u);
+  EXPECT_EQ(space.combinations[0].sets, (std::vector<size_t>{0, 1}));
+  // {_, A, B} x {C, A}: (_,A) and (A,A) are one variant, A; five in all.
+  EXPECT_EQ(space.combinations[0].choices.size(), 5u);
 }
 
 TEST_F(VariantsBuildTest, KeywordInASetAndADynamicBranchIsAnError) {
@@ -151,9 +151,21 @@ TEST_F(VariantsBuildTest, TheSameKeywordsInAnotherOrderAreARepeatToo) {
   EXPECT_EQ(count(DiagId::pragma_repeated_keyword_set), 1u);
 }
 
-TEST_F(VariantsBuildTest, AnOverlappingButDifferentSetStillClashes) {
-  build_fails({"multi_compile_fog", "multi_compile _ FOG_LINEAR"});
+TEST_F(VariantsBuildTest, SetsSharingAKeywordWithTooManyCombinationsAreAnError) {
+  std::string a = "multi_compile", b = "multi_compile";
+  for (int i = 0; i < 1100; ++i) a += " A" + std::to_string(i);
+  for (int i = 0; i < 1000; ++i) b += " B" + std::to_string(i);
+  b += " A0";
+  build_fails({a, b});
   EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 1u);
+  EXPECT_NE(first(DiagId::pragma_keyword_in_two_sets).message.find("too many to combine"), std::string::npos);
+}
+
+TEST_F(VariantsBuildTest, AnOverlappingButDifferentSetCombinesWithTheShortcut) {
+  KeywordSpace space = build({"multi_compile_fog", "multi_compile _ FOG_LINEAR"});
+  EXPECT_EQ(count(DiagId::pragma_keyword_in_two_sets), 0u);
+  // The fog set {_, LINEAR, EXP, EXP2} and {_, LINEAR}: LINEAR with EXP or EXP2 is a variant too.
+  EXPECT_EQ(count_variants(space).full, BigCount(6));
 }
 
 struct DirectiveCase {

@@ -238,16 +238,71 @@ TEST(SharedStageKeywordTest, SetsOfDifferentStagesMayShareAKeyword) {
   EXPECT_EQ(stage_keywords(*space, pick->key, Stage::vertex), (Keywords{"LOD_FADE_CROSSFADE"}));
 }
 
-TEST(SharedStageKeywordTest, SetsOfOneStageStillMayNotShareAKeyword) {
+KeywordSpace space_of_lines(const std::vector<std::string>& lines, Diagnostics& diags) {
   ir::Program program;
-  for (const char* name : {"multi_compile_vertex", "multi_compile"}) {
+  for (const std::string& line : lines) {
+    std::istringstream words(line);
     ir::Pragma pragma;
-    pragma.name = name;
-    pragma.args = {"_", "A"};
+    words >> pragma.name;
+    for (std::string arg; words >> arg;) pragma.args.push_back(arg);
     program.pragmas.push_back(pragma);
   }
+  auto space = build_keyword_space(program, diags);
+  EXPECT_TRUE(space.has_value());
+  return space ? *space : KeywordSpace{};
+}
+
+// Unity's rule for a keyword two pragmas of one stage declare: a variant
+// enables the union of its sets' choices, and equal unions are one variant.
+TEST(SharedStageKeywordTest, SetsOfOneStageSharingAKeywordGiveEachUnionOnce) {
   Diagnostics diags;
-  EXPECT_FALSE(build_keyword_space(program, diags).has_value());
+  KeywordSpace space = space_of_lines({"multi_compile _ A B", "shader_feature C A"}, diags);
+  EXPECT_FALSE(diags.has_errors());
+  // {_,A,B} x {C,A} (two keywords: no off state): 6 choices, 5 distinct unions.
+  EXPECT_EQ(variants_of(space), (std::set<Keywords>{{"A"}, {"C"}, {"A", "C"}, {"B", "C"}, {"A", "B"}}));
+  EXPECT_EQ(count_variants(space).full, BigCount(5));
+  EXPECT_EQ(count_variants(space, {.stage = Stage::fragment}).full, BigCount(5));
+}
+
+TEST(SharedStageKeywordTest, AVertexSetAndAnAllStageSetSharingAKeywordEnableItInEveryStage) {
+  Diagnostics diags;
+  KeywordSpace space = space_of_lines({"multi_compile_vertex _ A", "multi_compile _ A"}, diags);
+  EXPECT_FALSE(diags.has_errors());
+  EXPECT_EQ(variants_of(space), (std::set<Keywords>{{}, {"A"}}));
+  EXPECT_EQ(count_variants(space).full, BigCount(2));
+  Diagnostics pick_diags;
+  auto pick = select_variant(space, {"A"}, {}, {.strict = true}, pick_diags);
+  ASSERT_TRUE(pick.has_value());
+  EXPECT_EQ(stage_keywords(space, pick->key, Stage::vertex), (Keywords{"A"}));
+  EXPECT_EQ(stage_keywords(space, pick->key, Stage::fragment), (Keywords{"A"}));
+}
+
+// VRChat-style shaders declare VERTEXLIGHT_ON next to multi_compile_fwdbase,
+// before or after it: the shortcut's combinations stay, and every one of
+// them can also have the vertex lights on, in both stages.
+TEST(SharedStageKeywordTest, VertexLightsDeclaredBesideForwardBaseJoinItsCombinations) {
+  for (bool before : {true, false}) {
+    Diagnostics diags;
+    std::vector<std::string> lines = {"multi_compile_fwdbase", "multi_compile _ VERTEXLIGHT_ON"};
+    if (before) std::swap(lines[0], lines[1]);
+    KeywordSpace space = space_of_lines(lines, diags);
+    EXPECT_FALSE(diags.has_errors()) << before;
+    std::set<Keywords> fwdbase = variants_of(space_of("multi_compile_fwdbase"));
+    std::set<Keywords> expected;
+    for (Keywords k : fwdbase) {
+      expected.insert(k);
+      if (std::find(k.begin(), k.end(), "VERTEXLIGHT_ON") == k.end()) k.push_back("VERTEXLIGHT_ON");
+      std::sort(k.begin(), k.end());
+      expected.insert(k);
+    }
+    EXPECT_EQ(variants_of(space), expected) << before;
+    EXPECT_EQ(count_variants(space).full, BigCount(expected.size())) << before;
+    Diagnostics pick_diags;
+    auto pick = select_variant(space, {"DIRECTIONAL", "VERTEXLIGHT_ON"}, {}, {.strict = true}, pick_diags);
+    ASSERT_TRUE(pick.has_value()) << before;
+    Keywords fragment = stage_keywords(space, pick->key, Stage::fragment);
+    EXPECT_NE(std::find(fragment.begin(), fragment.end(), "VERTEXLIGHT_ON"), fragment.end()) << before;
+  }
 }
 
 }  // namespace
