@@ -139,5 +139,14 @@ sampler2D unity_DynamicLightmap : register(s5, space3);
 sampler2D unity_DynamicDirectionality : register(s6, space3);
 sampler2D unity_DynamicNormal : register(s7, space3);
 sampler3D unity_ProbeVolumeSH : register(s8, space3);
+// Unity declares these with UNITY_DECLARE_TEX2D (a texture and a sampler
+// sampler<name>); here they are combined samplers, and their sampler names
+// name them, which UNITY_SAMPLE_TEX2D's overloads (HLSLSupport.cginc) take.
+#define samplerunity_Lightmap unity_Lightmap
+#define samplerunity_LightmapInd unity_LightmapInd
+#define samplerunity_ShadowMask unity_ShadowMask
+#define samplerunity_DynamicLightmap unity_DynamicLightmap
+#define samplerunity_DynamicDirectionality unity_DynamicDirectionality
+#define samplerunity_DynamicNormal unity_DynamicNormal
 
 #endif // FACET_BUILTINS_INCLUDED

@@ -45,27 +45,38 @@
 #define UNITY_POSITION(pos) float4 pos : SV_POSITION
 #define UNITY_VPOS_TYPE float4
 
-// Textures: Unity's "no separate samplers" path.
-#define UNITY_DECLARE_TEX2D(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) sampler2D tex
+// 2D textures: Unity's separate-sampler path (Direct3D 11, Vulkan, Metal):
+// a texture object plus a sampler named sampler<tex>, so code may pass
+// either on (`_MainTex.SampleGrad(sampler_MainTex, ...)`, one sampler for
+// several textures). Cubes and 3D textures keep the combined DX9 form, which
+// the frame's built-ins (unity_SpecCube0, ...) use.
+#define UNITY_DECLARE_TEX2D(tex) Texture2D tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) Texture2D tex
 #define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
 #define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
 #define UNITY_DECLARE_TEX3D(tex) sampler3D tex
-#define UNITY_SAMPLE_TEX2D(tex, coord) tex2D(tex, coord)
-#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) tex2D(tex, coord)
-#define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
+// Sampling goes through overloads, so that the frame's 2D built-ins, which
+// are combined samplers (unity_Lightmap, unity_ShadowMask, ...: their
+// sampler<tex> names the texture itself, FacetBuiltins.hlsl), sample too.
+float4 FacetSampleTex2D(Texture2D tex, SamplerState s, float2 uv) { return tex.Sample(s, uv); }
+float4 FacetSampleTex2D(sampler2D tex, sampler2D s, float2 uv) { return tex2D(tex, uv); }
+float4 FacetSampleTex2DLod(Texture2D tex, SamplerState s, float2 uv, float lod) { return tex.SampleLevel(s, uv, lod); }
+float4 FacetSampleTex2DLod(sampler2D tex, sampler2D s, float2 uv, float lod) { return tex2Dlod(tex, float4(uv, 0, lod)); }
+#define UNITY_SAMPLE_TEX2D(tex, coord) FacetSampleTex2D(tex, sampler##tex, coord)
+#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) FacetSampleTex2D(tex, sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) FacetSampleTex2DLod(tex, sampler##tex, coord, lod)
 #define UNITY_SAMPLE_TEXCUBE(tex, coord) texCUBE(tex, coord)
 #define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) texCUBElod(tex, float4(coord, lod))
 #define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) texCUBE(tex, coord)
 #define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) texCUBElod(tex, float4(coord, lod))
 #define UNITY_SAMPLE_TEX3D(tex, coord) tex3D(tex, coord)
-#define UNITY_PASS_TEX2D(tex) tex
+#define UNITY_PASS_TEX2D(tex) tex, sampler##tex
 #define UNITY_PASS_TEXCUBE(tex) tex
 #define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex
 #define UNITY_PASS_TEXCUBE_SAMPLER_LOD(tex, samplertex, lod) tex
-#define UNITY_ARGS_TEX2D(tex) sampler2D tex
+#define UNITY_ARGS_TEX2D(tex) Texture2D tex, SamplerState sampler##tex
 #define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
-#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) FacetSampleTex2DLod(tex, sampler##samplertex, coord, lod)
 
 // Precision-suffixed sampler and texture types are the plain ones (all
 // sampling is float).
@@ -87,10 +98,10 @@
 #define TextureCube_half TextureCube
 #define TextureCubeArray_half TextureCubeArray
 #define Texture3D_half Texture3D
-#define UNITY_DECLARE_TEX2D_HALF(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_FLOAT(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_HALF(tex) Texture2D tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) Texture2D tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) Texture2D tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) Texture2D tex
 #define UNITY_DECLARE_TEX2D_NOSAMPLER_INT(tex) Texture2D<int4> tex
 #define UNITY_DECLARE_TEX2D_NOSAMPLER_UINT(tex) Texture2D<uint4> tex
 #define UNITY_DECLARE_TEX3D_NOSAMPLER(tex) sampler3D tex

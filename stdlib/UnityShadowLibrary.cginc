@@ -66,7 +66,7 @@ half UnitySampleShadowmap_PCF5x5Gaussian(float4 coord, float3 receiverPlaneDepth
 fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos)
 {
 #if defined(SHADOWS_SHADOWMASK)
-    return saturate(dot(UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV.xy), unity_OcclusionMaskSelector));
+    return saturate(dot(tex2D(unity_ShadowMask, lightmapUV.xy), unity_OcclusionMaskSelector));
 #else
     return 1.0;
 #endif
@@ -74,7 +74,7 @@ fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos)
 fixed4 UnityGetRawBakedOcclusions(float2 lightmapUV, float3 worldPos)
 {
 #if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
-    return UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV.xy);
+    return tex2D(unity_ShadowMask, lightmapUV.xy);
 #elif defined(SHADOWS_SHADOWMASK)
     return unity_ProbesOcclusion;
 #else

@@ -218,31 +218,66 @@ std::string_view log_line(const ir::Program& program, const std::string& root_na
 // The variables assigned on the lines where glslang refused to modify a
 // uniform (its message names the block, "$Global", not the variable), less
 // those already in `known`.
+// The line of preprocessed text that `#line` markers place at `line` of
+// `file`; empty when none does.
+std::string_view preprocessed_line(std::string_view text, const std::string& file, uint32_t line) {
+  std::string current;
+  uint32_t number = 1;
+  for (size_t pos = 0; pos < text.size();) {
+    size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view l = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    size_t first = l.find_first_not_of(" \t");
+    if (first != std::string_view::npos && l.substr(first).starts_with("#line")) {
+      std::string_view rest = l.substr(first + 5);
+      number = uint32_t(std::strtoul(std::string(rest).c_str(), nullptr, 10));
+      size_t q = rest.find('"');
+      if (q != std::string_view::npos) current = std::string(rest.substr(q + 1, rest.rfind('"') - q - 1));
+      continue;
+    }
+    if (number == line && current == file) return l;
+    ++number;
+  }
+  return {};
+}
+
+// The names a line assigns to ("NAME =", "NAME += ...", "NAME[i].x = ...").
+std::vector<std::string> assigned_names(std::string_view line) {
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::vector<std::string> names;
+  for (size_t i = 0; i < line.size(); ++i) {
+    bool assign = line[i] == '=' && (i + 1 >= line.size() || line[i + 1] != '=') &&
+                  (i == 0 || std::string_view("=!<>").find(line[i - 1]) == std::string_view::npos);
+    if (!assign) continue;
+    size_t end = i;
+    while (end > 0 && std::string_view(" \t+-*/%&|^").find(line[end - 1]) != std::string_view::npos) --end;
+    while (end > 0 && (line[end - 1] == ']' || std::isalnum(static_cast<unsigned char>(line[end - 1])) ||
+                       line[end - 1] == '_' || line[end - 1] == '.' || line[end - 1] == '[')) {
+      --end;
+    }
+    size_t stop = end;
+    while (stop < line.size() && ident(line[stop])) ++stop;
+    std::string name(line.substr(end, stop - end));
+    if (!name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]))) names.push_back(std::move(name));
+  }
+  return names;
+}
+
 std::vector<std::string> assigned_uniforms(const std::vector<LogMessage>& messages, const ir::Program& program,
                                            const std::string& root_name, const FileIncluder& includer,
-                                           const std::vector<std::string>& known) {
-  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+                                           const std::string& preprocessed, const std::vector<std::string>& known) {
   std::vector<std::string> out;
   for (const LogMessage& m : messages) {
     if (m.severity != Severity::error || m.text.find("can't modify a uniform") == std::string::npos) continue;
-    std::string_view line = log_line(program, root_name, includer, m.file, m.line);
-    for (size_t i = 0; i < line.size(); ++i) {
-      bool assign = line[i] == '=' && (i + 1 >= line.size() || line[i + 1] != '=') &&
-                    (i == 0 || std::string_view("=!<>").find(line[i - 1]) == std::string_view::npos);
-      if (!assign) continue;
-      size_t end = i;
-      while (end > 0 && std::string_view(" \t+-*/%&|^").find(line[end - 1]) != std::string_view::npos) --end;
-      while (end > 0 && (line[end - 1] == ']' || std::isalnum(static_cast<unsigned char>(line[end - 1])) ||
-                         line[end - 1] == '_' || line[end - 1] == '.' || line[end - 1] == '[')) {
-        --end;
-      }
-      size_t stop = end;
-      while (stop < line.size() && ident(line[stop])) ++stop;
-      std::string name(line.substr(end, stop - end));
-      if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) continue;
+    std::vector<std::string> names = assigned_names(log_line(program, root_name, includer, m.file, m.line));
+    // An assignment a macro makes ("CLAMP_STRENGTH;") is on the line of
+    // the preprocessed text.
+    if (names.empty()) names = assigned_names(preprocessed_line(preprocessed, m.file, m.line));
+    for (std::string& name : names) {
       if (std::find(known.begin(), known.end(), name) == known.end() &&
           std::find(out.begin(), out.end(), name) == out.end()) {
-        out.push_back(name);
+        out.push_back(std::move(name));
       }
     }
   }
@@ -289,7 +324,7 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
   for (int attempt = 0; attempt < 4 && !out.ok && is_hlsl(program); ++attempt) {
     ir::Program retry = cast_program ? *cast_program : program;
     std::vector<LogMessage> messages = parse_info_log(out.parse_log);
-    std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, assigned);
+    std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, out.preprocessed, assigned);
     std::vector<CastCall> more = cast_rejected_calls(retry, source.root_name, messages, includer->returned_texts());
     // The files as written go to the SourceMap first, so warnings point at them.
     add_included_files(*includer, sources);

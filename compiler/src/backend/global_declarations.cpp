@@ -185,14 +185,21 @@ class Checker {
       if (at(i).kind != Token::ident) return;
       const Token& name = at(i++);
       if (i < end && at(i).text == "(") {
-        // A function's declaration; glslang reads a name after its ')' as
-        // another declarator of the type ("float4 f(v2f i) X;").
+        // A function's declaration: after its ')' and semantic comes its
+        // body or ';'. glslang reads a name there as another declarator of
+        // the type and crashes when the name is taken ("float4 f(v2f i)
+        // appdata {" with a struct appdata, "... : SV_Targe sampler_X;").
         for (int paren = 0; i < end; ++i) {
           paren += at(i).text == "(" ? 1 : at(i).text == ")" ? -1 : 0;
           if (paren == 0) break;
         }
         ++i;
-        if (i < end && at(i).kind == Token::ident) continue;
+        if (i + 1 < end && at(i).text == ":" && at(i + 1).kind == Token::ident) i += 2;
+        if (i < end && at(i).kind == Token::ident) {
+          return fail(at(i), fmt::format("unexpected '{}' after the declaration of function '{}'; a function's "
+                                         "parameters are followed by its body or ';'",
+                                         at(i).text, name.text));
+        }
         return;
       }
       std::string dims;

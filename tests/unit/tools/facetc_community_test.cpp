@@ -1,0 +1,79 @@
+// Constructs of community shaders (VRChat toon suites and the like) that
+// Unity accepts, each in a shader of our own: they compile to valid SPIR-V.
+#include <nlohmann/json.hpp>
+
+#include "facetc_test_util.h"
+
+namespace facet::tools::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string pass_shader(const std::string& pragmas, const std::string& code) {
+  return "Shader \"Community\" {\n"
+         "  Properties { _MainTex (\"Tex\", 2D) = \"white\" {} _Strength (\"Strength\", Float) = 1 }\n"
+         "  SubShader { Pass {\n"
+         "    Tags { \"LightMode\" = \"ForwardBase\" }\n"
+         "    CGPROGRAM\n"
+         "    #pragma vertex vert\n"
+         "    #pragma fragment frag\n" +
+         pragmas + "    #include \"UnityCG.cginc\"\n" + code + "    ENDCG\n  } }\n}\n";
+}
+
+const char* kVert = "    float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }\n";
+
+TEST_F(FacetcTest, VertexLightsDeclaredBesideForwardBaseCompileEveryVariant) {
+  write_all(dir_ / "v.shader", pass_shader("    #pragma multi_compile _ VERTEXLIGHT_ON\n    #pragma multi_compile_fwdbase\n",
+                                           std::string(kVert) +
+                                               "    float4 frag() : SV_Target {\n"
+                                               "    #ifdef VERTEXLIGHT_ON\n      return 1;\n    #else\n      return 0;\n"
+                                               "    #endif\n    }\n"));
+  FacetcRun list = facetc({"v.shader", "--list-variants"});
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_THAT(list.out, HasSubstr("  pass       132"));
+  FacetcRun build = facetc({"v.shader", "--build-unreachable", "-o", "v.facetpkg"});
+  ASSERT_EQ(build.exit_code, 0) << build.err;
+  EXPECT_THAT(build.err, ::testing::Not(HasSubstr("error")));
+}
+
+TEST_F(FacetcTest, ATextureDeclaredWithItsSamplerMaySampleThroughEitherName) {
+  write_all(dir_ / "s.shader",
+            pass_shader("", "    UNITY_DECLARE_TEX2D(_MainTex);\n    UNITY_DECLARE_TEX2D_NOSAMPLER(_Mask);\n" +
+                                std::string(kVert) +
+                                "    float4 frag(float4 p : SV_POSITION) : SV_Target {\n"
+                                "      float2 uv = p.xy / 256;\n"
+                                "      float4 a = _MainTex.SampleGrad(sampler_MainTex, uv, ddx(uv), ddy(uv));\n"
+                                "      return a * UNITY_SAMPLE_TEX2D(_MainTex, uv) * UNITY_SAMPLE_TEX2D_SAMPLER(_Mask, _MainTex, uv)\n"
+                                "           * UNITY_SAMPLE_TEX2D_LOD(_MainTex, uv, 0);\n"
+                                "    }\n"));
+  FacetcRun reflect = facetc({"s.shader", "--reflect", "--pass", "0"});
+  ASSERT_EQ(reflect.exit_code, 0) << reflect.err;
+  EXPECT_THAT(reflect.out, HasSubstr("\"name\": \"sampler_MainTex\""));
+  EXPECT_THAT(reflect.out, HasSubstr("\"kind\": \"separate_image\""));
+  EXPECT_THAT(reflect.out, HasSubstr("\"kind\": \"separate_sampler\""));
+}
+
+TEST_F(FacetcTest, AUniformAssignedThroughAMacroGetsItsStaticCopy) {
+  write_all(dir_ / "m.shader",
+            pass_shader("", "    float _Strength;\n"
+                            "    #define CLAMP_STRENGTH if (_Strength > 10) { _Strength = 10; }\n" +
+                                std::string(kVert) + "    float4 frag() : SV_Target { CLAMP_STRENGTH; return _Strength; }\n"));
+  FacetcRun build = facetc({"m.shader", "-o", "m.facetpkg"});
+  ASSERT_EQ(build.exit_code, 0) << build.err;
+  FacetcRun dump = facetc({"--dump", "m.facetpkg"});
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  EXPECT_THAT(dump.out, HasSubstr("\"_Strength\"")) << "the assigned global stays a uniform under its own name";
+}
+
+TEST_F(FacetcTest, AFrontFaceParameterOfAnyTypeCompiles) {
+  for (const char* parameter : {"uint facing : SV_IsFrontFace", "float facing : VFACE", "fixed facing : VFACE"}) {
+    write_all(dir_ / "f.shader",
+              pass_shader("", std::string(kVert) + "    float4 frag(float4 p : SV_POSITION, " + parameter +
+                                  ") : SV_Target { return facing > 0 ? 1 : 0; }\n"));
+    FacetcRun build = facetc({"f.shader", "-o", "f.facetpkg"});
+    EXPECT_EQ(build.exit_code, 0) << parameter << "\n" << build.err;
+  }
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
