@@ -78,6 +78,12 @@ float4 FacetSampleTex2DLod(sampler2D tex, sampler2D s, float2 uv, float lod) { r
 #define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
 #define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) FacetSampleTex2DLod(tex, sampler##samplertex, coord, lod)
 
+// fxc still reads Direct3D 9 effect files' lower-case texture types
+// (`texture2D _OutlineTexture;`), which glslang does not know.
+#define texture2D Texture2D
+#define texture3D Texture3D
+#define textureCUBE TextureCube
+
 // Precision-suffixed sampler and texture types are the plain ones (all
 // sampling is float).
 #define sampler2D_float sampler2D

@@ -302,6 +302,13 @@ bool fixed_errors(const std::vector<LogMessage>& before, const std::vector<LogMe
   return true;
 }
 
+// Compiles again after casting calls, copying assigned uniforms and casting
+// float switches: glslang reports only some errors of a long program at a
+// time (one per function), so large programs need several rounds; each
+// round must fix what it rewrote (fixed_errors), so this bounds only
+// programs that keep yielding new sites.
+constexpr int kMaxRetries = 16;
+
 // Backend::compile, on the worker thread.
 Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                     const std::vector<std::string>& keywords, const BackendOptions& options,
@@ -321,7 +328,7 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
   std::vector<CastCall> casts;
   std::vector<std::string> assigned;
   std::map<std::string, std::string> overrides;  // included files whose calls got casts
-  for (int attempt = 0; attempt < 4 && !out.ok && is_hlsl(program); ++attempt) {
+  for (int attempt = 0; attempt < kMaxRetries && !out.ok && is_hlsl(program); ++attempt) {
     ir::Program retry = cast_program ? *cast_program : program;
     std::vector<LogMessage> messages = parse_info_log(out.parse_log);
     std::vector<std::string> more_assigned = assigned_uniforms(messages, retry, source.root_name, *includer, out.preprocessed, assigned);

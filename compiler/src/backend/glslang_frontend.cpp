@@ -303,6 +303,22 @@ std::string without_spaced_member_dots(const std::string& text) {
   return out;
 }
 
+// glslang throws on some inputs: Debian's 12.x preprocessor builds a string
+// of a negative length for a token at column 0 after an empty macro
+// argument (fixed upstream later). An exception is the program's error, not
+// a crash of the compiler.
+template <class F>
+bool without_throwing(GlslangOutput& out, const AssembledSource& source, std::string_view step, F&& run) {
+  try {
+    return run();
+  } catch (const std::exception& e) {
+    out.parse_log += fmt::format("ERROR: {}:0: '{}' : glslang failed in its {} ({}), a glslang bug; rewriting the "
+                                 "construct it fails on (an empty macro argument, for one) may avoid it\n",
+                                 source.root_name, step, step, e.what());
+    return false;
+  }
+}
+
 }  // namespace
 
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
@@ -315,9 +331,11 @@ GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage l
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, entry, options);
-  out.ok = shader.parse(GetDefaultResources(), default_version(language), false, messages_for(language, options),
+  out.ok = without_throwing(out, source, "parser", [&] {
+    return shader.parse(GetDefaultResources(), default_version(language), false, messages_for(language, options),
                         includer);
-  out.parse_log = shader.getInfoLog();
+  });
+  out.parse_log = shader.getInfoLog() + out.parse_log;
   if (out.ok) visit(*shader.getIntermediate());
   return out;
 }
@@ -354,8 +372,10 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, entry, options);
-  bool parsed = shader.parse(GetDefaultResources(), default_version(language), false, messages, includer);
-  out.parse_log = shader.getInfoLog();
+  bool parsed = without_throwing(out, source, "parser", [&] {
+    return shader.parse(GetDefaultResources(), default_version(language), false, messages, includer);
+  });
+  out.parse_log = shader.getInfoLog() + out.parse_log;
   if (!parsed) return out;
   if (is_hlsl(language)) {
     std::string missing = missing_stage_attribute(*shader.getIntermediate(), stage, entry);
@@ -369,7 +389,7 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   // The program must die before the shader it links (glslang's rule).
   auto program = std::make_unique<glslang::TProgram>();
   program->addShader(&shader);
-  bool linked = program->link(messages) && program->mapIO();
+  bool linked = without_throwing(out, source, "linker", [&] { return program->link(messages) && program->mapIO(); });
   out.link_log = program->getInfoLog();
   if (!linked) return out;
 
@@ -381,7 +401,10 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   spv_options.disableOptimizer = true;
   spv_options.validate = false;
   spv::SpvBuildLogger logger;
-  glslang::GlslangToSpv(*program->getIntermediate(to_glslang(stage)), out.spirv, &logger, &spv_options);
+  without_throwing(out, source, "SPIR-V generator", [&] {
+    glslang::GlslangToSpv(*program->getIntermediate(to_glslang(stage)), out.spirv, &logger, &spv_options);
+    return true;
+  });
   out.spirv_log = logger.getAllMessages();
   out.ok = !out.spirv.empty();
   return out;
@@ -396,9 +419,11 @@ GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLangu
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, "main", options);
-  out.ok = shader.preprocess(GetDefaultResources(), default_version(language), ENoProfile, false, false,
+  out.ok = without_throwing(out, source, "preprocessor", [&] {
+    return shader.preprocess(GetDefaultResources(), default_version(language), ENoProfile, false, false,
                              messages_for(language, options), &out.preprocessed, includer);
-  out.parse_log = shader.getInfoLog();
+  });
+  out.parse_log = shader.getInfoLog() + out.parse_log;
   return out;
 }
 

@@ -232,6 +232,7 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
   std::string out;
   out.reserve(text.size());
   int depth = 0;
+  bool in_block_comment = false;
   size_t line_begin = 0;
   while (line_begin <= text.size()) {
     size_t line_end = text.find('\n', line_begin);
@@ -239,7 +240,23 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
     std::string_view line = text.substr(line_begin, line_end - line_begin);
     std::optional<std::string> replaced = depth == 0 ? rewrite_declarations(line, assigned) : std::nullopt;
     out += replaced ? *replaced : std::string(line);
-    for (char c : line) depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+    // Braces in comments and strings (`// if (x) {`) do not nest.
+    for (size_t i = 0; i < line.size(); ++i) {
+      char c = line[i];
+      char next = i + 1 < line.size() ? line[i + 1] : '\0';
+      if (in_block_comment) {
+        if (c == '*' && next == '/') in_block_comment = false, ++i;
+      } else if (c == '/' && next == '/') {
+        break;
+      } else if (c == '/' && next == '*') {
+        in_block_comment = true;
+        ++i;
+      } else if (c == '"') {
+        for (++i; i < line.size() && line[i] != '"'; ++i) i += line[i] == '\\';
+      } else {
+        depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+      }
+    }
     if (depth < 0) depth = 0;
     if (line_end == text.size()) break;
     out += '\n';

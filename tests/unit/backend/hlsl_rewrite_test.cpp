@@ -68,6 +68,11 @@ INSTANTIATE_TEST_SUITE_P(
                     "float T_facet_uniform; static float T = T_facet_uniform; float col;",
                     "float T_facet_uniform; static float T = T_facet_uniform; float col_facet_uniform; "
                     "static float col = col_facet_uniform;"},
+        RewriteCase{"braces_in_comments_and_strings_do_not_nest",
+                    "// if (x) {\n/* { */ #pragma message \"{\"\nfloat T;",
+                    "// if (x) {\n/* { */ #pragma message \"{\"\nfloat T_facet_uniform; static float T = T_facet_uniform;"},
+        RewriteCase{"braces_of_a_block_comment_over_lines_do_not_nest", "/*\n{\n*/\nfloat T;",
+                    "/*\n{\n*/\nfloat T_facet_uniform; static float T = T_facet_uniform;"},
         RewriteCase{"lines_kept", "int I;\nfloat T, col;\n",
                     "int I;\nfloat T_facet_uniform; static float T = T_facet_uniform; float col_facet_uniform; "
                     "static float col = col_facet_uniform;\n"}),

@@ -75,5 +75,22 @@ TEST_F(FacetcTest, AFrontFaceParameterOfAnyTypeCompiles) {
   }
 }
 
+TEST_F(FacetcTest, DirectXNineLowerCaseTextureTypesAreTheirTypes) {
+  write_all(dir_ / "t.shader",
+            pass_shader("", "    texture2D _Outline; SamplerState sampler_Outline; texture3D _Vol; textureCUBE _Env;\n" +
+                                std::string(kVert) +
+                                "    float4 frag(float4 p : SV_POSITION) : SV_Target { return _Outline.Sample(sampler_Outline, p.xy); }\n"));
+  FacetcRun build = facetc({"t.shader", "-o", "t.facetpkg"});
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+}
+
+// A '{' in a comment before the declaration (`// if (x) {`) is no block.
+TEST_F(FacetcTest, AUniformAssignedAfterABraceInACommentGetsItsStaticCopy) {
+  write_all(dir_ / "c.shader", pass_shader("", "    // if (unused) {\n    float _Strength;\n" + std::string(kVert) +
+                                                   "    float4 frag() : SV_Target { _Strength = 0; return _Strength; }\n"));
+  FacetcRun build = facetc({"c.shader", "-o", "c.facetpkg"});
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+}
+
 }  // namespace
 }  // namespace facet::tools::testing
