@@ -222,6 +222,32 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
   return out;
 }
 
+namespace {
+
+// "switch (x)" on the 0-based line `line` of `text` becomes
+// "switch ((int)(x))"; false when the line holds no such switch.
+bool cast_switch_on_line(std::string& text, uint32_t line) {
+  size_t from = line_start(text, line);
+  size_t end = from == std::string::npos ? from : text.find('\n', from);
+  if (end == std::string::npos) end = text.size();
+  for (size_t at = text.find("switch", from); at != std::string::npos && at < end; at = text.find("switch", at + 1)) {
+    if (!is_word_at(text, at, "switch")) continue;
+    size_t open = skip_space(text, at + 6);
+    size_t close = open < text.size() && text[open] == '(' ? matching_paren(text, open) : std::string::npos;
+    if (close == std::string::npos) return false;
+    text.insert(close, ")");
+    text.insert(open + 1, "(int)(");
+    return true;
+  }
+  return false;
+}
+
+bool is_float_switch_error(const LogMessage& m) {
+  return m.severity == Severity::error && m.token == "switch" && m.text.find(kSwitchNotInteger) != std::string::npos;
+}
+
+}  // namespace
+
 size_t cast_float_switches(ir::Program& program, const std::string& root_name, const std::vector<LogMessage>& messages) {
   std::vector<ir::SourceChunk*> chunks;
   for (ir::SourceChunk& c : program.includes) chunks.push_back(&c);
@@ -229,29 +255,28 @@ size_t cast_float_switches(ir::Program& program, const std::string& root_name, c
   size_t cast = 0;
   std::set<std::pair<std::string, uint32_t>> done;
   for (const LogMessage& m : messages) {
-    if (m.severity != Severity::error || m.token != "switch" || m.text.find(kSwitchNotInteger) == std::string::npos) {
-      continue;
-    }
-    if (!done.insert({m.file, m.line}).second) continue;
+    if (!is_float_switch_error(m) || !done.insert({m.file, m.line}).second) continue;
     for (ir::SourceChunk* chunk : chunks) {
       bool same_file = chunk->line_file.empty() ? m.file == root_name : m.file == chunk->line_file;
       if (!same_file || m.line < chunk->first_line || m.line >= chunk->first_line + line_count(chunk->text)) continue;
-      std::string& text = chunk->text;
-      size_t from = line_start(text, m.line - chunk->first_line);
-      size_t end = from == std::string::npos ? from : text.find('\n', from);
-      if (end == std::string::npos) end = text.size();
-      for (size_t at = text.find("switch", from); at != std::string::npos && at < end; at = text.find("switch", at + 1)) {
-        if (!is_word_at(text, at, "switch")) continue;
-        size_t open = skip_space(text, at + 6);
-        size_t close = open < text.size() && text[open] == '(' ? matching_paren(text, open) : std::string::npos;
-        if (close == std::string::npos) break;
-        text.insert(close, ")");
-        text.insert(open + 1, "(int)(");
-        ++cast;
-        break;
-      }
+      cast += cast_switch_on_line(chunk->text, m.line - chunk->first_line);
       break;
     }
+  }
+  return cast;
+}
+
+size_t cast_float_switches_in_includes(std::map<std::string, std::string>& texts,
+                                       const std::map<std::string, std::string>& current,
+                                       const std::vector<LogMessage>& messages) {
+  size_t cast = 0;
+  std::set<std::pair<std::string, uint32_t>> done;
+  for (const LogMessage& m : messages) {
+    if (!is_float_switch_error(m) || m.line == 0 || !done.insert({m.file, m.line}).second) continue;
+    auto source = current.find(m.file);
+    if (source == current.end()) continue;
+    if (!texts.count(m.file)) texts[m.file] = source->second;
+    cast += cast_switch_on_line(texts[m.file], m.line - 1);
   }
   return cast;
 }

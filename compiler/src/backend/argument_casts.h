@@ -34,6 +34,12 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
 // "switch (x)" in `program`'s chunks on a line that `messages` reports so
 // becomes "switch ((int)(x))"; returns how many were rewritten.
 size_t cast_float_switches(ir::Program& program, const std::string& root_name, const std::vector<LogMessage>& messages);
+// The same for switches in included files: `texts` holds the rewritten
+// texts by path (the includer's overrides), `current` the texts the
+// includer returned.
+size_t cast_float_switches_in_includes(std::map<std::string, std::string>& texts,
+                                       const std::map<std::string, std::string>& current,
+                                       const std::vector<LogMessage>& messages);
 
 // The same for calls in included files: `texts` holds each file's text by
 // the path glslang names (edited in place; a file not yet in it is read

@@ -339,7 +339,8 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
     std::vector<CastCall> more_in_files =
         cast_rejected_calls_in_includes(retry_overrides, includer->returned_texts(), retry, messages, sources);
     more.insert(more.end(), more_in_files.begin(), more_in_files.end());
-    size_t switches = cast_float_switches(retry, source.root_name, messages);
+    size_t switches = cast_float_switches(retry, source.root_name, messages) +
+                      cast_float_switches_in_includes(retry_overrides, includer->returned_texts(), messages);
     if (more.empty() && more_assigned.empty() && switches == 0) break;
     for (ir::SourceChunk& chunk : retry.includes) chunk.text = rewrite_assigned_uniforms(chunk.text, more_assigned);
     retry.body.text = rewrite_assigned_uniforms(retry.body.text, more_assigned);

@@ -92,5 +92,23 @@ TEST_F(FacetcTest, AUniformAssignedAfterABraceInACommentGetsItsStaticCopy) {
   EXPECT_EQ(build.exit_code, 0) << build.err;
 }
 
+// fxc switches on a float; glslang wants an integer: in an included file
+// too, and as many switches as a program has (glslang reports a few a round).
+TEST_F(FacetcTest, SwitchesOnFloatsCompileInIncludedFilesAndInNumbers) {
+  write_all(dir_ / "Pick.cginc", "float pick(float mode) {\n  switch (mode) { case 1: return 0.5; default: return 1; }\n}\n");
+  std::string many;
+  for (int i = 0; i < 8; ++i) {
+    many += "    float pick" + std::to_string(i) + "(float m) { switch (m) { case 1: return " + std::to_string(i) +
+            "; default: return 0; } }\n";
+  }
+  std::string sum = "pick(_Strength)";
+  for (int i = 0; i < 8; ++i) sum += " + pick" + std::to_string(i) + "(_Strength)";
+  write_all(dir_ / "w.shader", pass_shader("", "    float _Strength;\n    #include \"Pick.cginc\"\n" + many +
+                                                   std::string(kVert) + "    float4 frag() : SV_Target { return " +
+                                                   sum + "; }\n"));
+  FacetcRun build = facetc({"w.shader", "-o", "w.facetpkg"});
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+}
+
 }  // namespace
 }  // namespace facet::tools::testing
