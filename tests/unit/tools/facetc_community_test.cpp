@@ -110,5 +110,22 @@ TEST_F(FacetcTest, SwitchesOnFloatsCompileInIncludedFilesAndInNumbers) {
   EXPECT_EQ(build.exit_code, 0) << build.err;
 }
 
+// Debian's glslang 12 throws std::length_error from its preprocessor's
+// output writer when a '##' with an empty argument inside another macro's
+// argument runs to the end of an included file (a token at column 0): a
+// located error and exit 1, never an abort.
+TEST_F(FacetcTest, AnExceptionInsideGlslangIsAnErrorNotACrash) {
+  write_all(dir_ / "paste.cginc", "#define PASS_THROUGH(tok) tok\n#define MAKE_NAME(suffix) PASS_THROUGH(_Layer##suffix)\n"
+                                  "MAKE_NAME()\n");
+  write_all(dir_ / "p.shader", "Shader \"P\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n"
+                               "#include \"paste.cginc\"\nENDCG\n} } }\n");
+  for (const char* mode : {"-S", "-E"}) {
+    FacetcRun run = facetc({"p.shader", mode, "-o", "out.txt"});
+    EXPECT_EQ(run.exit_code, 1) << mode << "\n" << run.err;
+    EXPECT_THAT(run.err, HasSubstr("glslang failed in its preprocessor (basic_string::_M_create)")) << mode;
+    EXPECT_FALSE(fs::exists(dir_ / "out.txt")) << mode;
+  }
+}
+
 }  // namespace
 }  // namespace facet::tools::testing
