@@ -111,6 +111,9 @@ void append_defines(std::string& out, const ir::Program& program, Stage stage,
     // own HLSLSupport.cginc (given with -I) picks its Vulkan code by these.
     out += "#define UNITY_COMPILER_HLSL\n";
     out += "#define UNITY_COMPILER_HLSLCC\n";
+    // glslang lowers this intrinsic to gl_NumSamples, which SPIR-V lacks,
+    // and crashes generating SPIR-V; facet's targets are single-sampled.
+    out += "#define GetRenderTargetSampleCount() 1u\n";
     if (unity_cgincludes_on_path(options)) out += kUnityTier3Defines;
   }
   append_pass_define(out, program, options);

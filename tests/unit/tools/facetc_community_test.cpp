@@ -127,5 +127,18 @@ TEST_F(FacetcTest, AnExceptionInsideGlslangIsAnErrorNotACrash) {
   }
 }
 
+// glslang lowers GetRenderTargetSampleCount() to gl_NumSamples and its
+// SPIR-V generator crashes on it (SIGSEGV): facet's targets have one sample.
+TEST_F(FacetcTest, GetRenderTargetSampleCountIsOne) {
+  write_all(dir_ / "n.shader",
+            pass_shader("", std::string(kVert) +
+                                "    half4 frag() : SV_Target { half n = GetRenderTargetSampleCount(); return n; }\n"));
+  FacetcRun build = facetc({"n.shader", "-o", "n.facetpkg"});
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+  FacetcRun glsl = facetc({"n.shader", "--stage", "fragment", "-S", "--emit=glsl", "-o", "-"});
+  EXPECT_EQ(glsl.exit_code, 0) << glsl.err;
+  EXPECT_THAT(glsl.out, ::testing::Not(HasSubstr("gl_NumSamples")));
+}
+
 }  // namespace
 }  // namespace facet::tools::testing
