@@ -1,6 +1,8 @@
 #include "backend/argument_casts.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <optional>
 #include <set>
 #include <string_view>
@@ -224,26 +226,105 @@ std::vector<CastCall> cast_rejected_calls(ir::Program& program, const std::strin
 
 namespace {
 
-// "switch (x)" on the 0-based line `line` of `text` becomes
-// "switch ((int)(x))"; false when the line holds no such switch.
+// The float literal labels of the switch body whose '{' is at `open`
+// (`case 1.0:`, `case 2.5f:`) become integers, as fxc converts them: glslang
+// would find "duplicated value" once the condition is an int. Lengths are
+// kept with spaces, so later offsets on the line hold.
+bool integer_case_labels(std::string& text, size_t open) {
+  bool changed = false;
+  int depth = 0;
+  for (size_t i = open; i < text.size(); ++i) {
+    if (text[i] == '{') ++depth;
+    if (text[i] == '}' && --depth == 0) return changed;
+    if (depth != 1 || !is_word_at(text, i, "case")) continue;
+    size_t begin = skip_space(text, i + 4), end = begin;
+    while (end < text.size() && (is_ident(text[end]) || text[end] == '.' || text[end] == '-' || text[end] == '+')) ++end;
+    std::string_view label(text.data() + begin, end - begin);
+    bool is_float = !label.empty() && (std::isdigit(static_cast<unsigned char>(label[0])) || label[0] == '.' ||
+                                       label[0] == '-') &&
+                    label.find_first_of(".eEfF") != std::string_view::npos;
+    if (!is_float) continue;
+    char* parsed = nullptr;
+    std::string literal(label);
+    if (!literal.empty() && (literal.back() == 'f' || literal.back() == 'F')) literal.pop_back();
+    double value = std::strtod(literal.c_str(), &parsed);
+    if (parsed != literal.c_str() + literal.size()) continue;
+    std::string integer = std::to_string(static_cast<long long>(value));
+    integer.resize(std::max(integer.size(), label.size()), ' ');
+    text.replace(begin, label.size(), integer);
+    changed = true;
+    i = begin + integer.size() - 1;
+  }
+  return changed;
+}
+
+// The switch whose "switch" word is at `at` becomes "switch ((int)(x))"
+// (unless it is already), and its float case labels integers; false when
+// nothing changed (a switch on an int with two equal labels stays an error).
+bool cast_switch_at(std::string& text, size_t at) {
+  size_t open = skip_space(text, at + 6);
+  size_t close = open < text.size() && text[open] == '(' ? matching_paren(text, open) : std::string::npos;
+  if (close == std::string::npos) return false;
+  bool changed = false;
+  if (text.compare(open + 1, 6, "(int)(") != 0) {
+    text.insert(close, ")");
+    text.insert(open + 1, "(int)(");
+    close += 7;  // the original ')', past the ")" and "(int)(" just inserted
+    changed = true;
+  }
+  size_t body = skip_space(text, close + 1);
+  if (body < text.size() && text[body] == '{') changed |= integer_case_labels(text, body);
+  return changed;
+}
+
+// "switch (x)" on the 0-based line `line` of `text`: cast_switch_at; false
+// when the line holds no such switch.
 bool cast_switch_on_line(std::string& text, uint32_t line) {
   size_t from = line_start(text, line);
   size_t end = from == std::string::npos ? from : text.find('\n', from);
   if (end == std::string::npos) end = text.size();
   for (size_t at = text.find("switch", from); at != std::string::npos && at < end; at = text.find("switch", at + 1)) {
+    if (is_word_at(text, at, "switch")) return cast_switch_at(text, at);
+  }
+  return false;
+}
+
+// The innermost switch whose body holds the 0-based line `line` (a "case"
+// glslang names): cast_switch_at; false when there is none.
+bool cast_switch_around_line(std::string& text, uint32_t line) {
+  size_t target = line_start(text, line);
+  if (target == std::string::npos) return false;
+  for (size_t at = text.rfind("switch", target); at != std::string::npos && at > 0; at = text.rfind("switch", at - 1)) {
     if (!is_word_at(text, at, "switch")) continue;
     size_t open = skip_space(text, at + 6);
     size_t close = open < text.size() && text[open] == '(' ? matching_paren(text, open) : std::string::npos;
-    if (close == std::string::npos) return false;
-    text.insert(close, ")");
-    text.insert(open + 1, "(int)(");
-    return true;
+    size_t body = close == std::string::npos ? close : skip_space(text, close + 1);
+    if (body >= text.size() || text[body] != '{') continue;
+    int depth = 0;
+    size_t end = body;
+    for (; end < text.size(); ++end) {
+      if (text[end] == '{') ++depth;
+      if (text[end] == '}' && --depth == 0) break;
+    }
+    if (target > body && target < end) return cast_switch_at(text, at);
   }
   return false;
 }
 
 bool is_float_switch_error(const LogMessage& m) {
   return m.severity == Severity::error && m.token == "switch" && m.text.find(kSwitchNotInteger) != std::string::npos;
+}
+
+// glslang converts float case labels of a switch on a float and may find
+// them equal ("case 0.0:" and "case 1.0:"): the switch is cast where fxc
+// would have converted it.
+bool is_float_case_error(const LogMessage& m) {
+  return m.severity == Severity::error && m.token == "case" && m.text.find("duplicated value") != std::string::npos;
+}
+
+// Casts the switch a message names, in `text` whose 0-based line `line` it names.
+bool cast_switch_of(const LogMessage& m, std::string& text, uint32_t line) {
+  return is_float_switch_error(m) ? cast_switch_on_line(text, line) : cast_switch_around_line(text, line);
 }
 
 }  // namespace
@@ -255,11 +336,11 @@ size_t cast_float_switches(ir::Program& program, const std::string& root_name, c
   size_t cast = 0;
   std::set<std::pair<std::string, uint32_t>> done;
   for (const LogMessage& m : messages) {
-    if (!is_float_switch_error(m) || !done.insert({m.file, m.line}).second) continue;
+    if ((!is_float_switch_error(m) && !is_float_case_error(m)) || !done.insert({m.file, m.line}).second) continue;
     for (ir::SourceChunk* chunk : chunks) {
       bool same_file = chunk->line_file.empty() ? m.file == root_name : m.file == chunk->line_file;
       if (!same_file || m.line < chunk->first_line || m.line >= chunk->first_line + line_count(chunk->text)) continue;
-      cast += cast_switch_on_line(chunk->text, m.line - chunk->first_line);
+      cast += cast_switch_of(m, chunk->text, m.line - chunk->first_line);
       break;
     }
   }
@@ -272,11 +353,12 @@ size_t cast_float_switches_in_includes(std::map<std::string, std::string>& texts
   size_t cast = 0;
   std::set<std::pair<std::string, uint32_t>> done;
   for (const LogMessage& m : messages) {
-    if (!is_float_switch_error(m) || m.line == 0 || !done.insert({m.file, m.line}).second) continue;
+    bool relevant = is_float_switch_error(m) || is_float_case_error(m);
+    if (!relevant || m.line == 0 || !done.insert({m.file, m.line}).second) continue;
     auto source = current.find(m.file);
     if (source == current.end()) continue;
     if (!texts.count(m.file)) texts[m.file] = source->second;
-    cast += cast_switch_on_line(texts[m.file], m.line - 1);
+    cast += cast_switch_of(m, texts[m.file], m.line - 1);
   }
   return cast;
 }

@@ -110,6 +110,25 @@ TEST_F(FacetcTest, SwitchesOnFloatsCompileInIncludedFilesAndInNumbers) {
   EXPECT_EQ(build.exit_code, 0) << build.err;
 }
 
+// fxc converts float case labels too: 0.0 and 1.0 stay two cases.
+TEST_F(FacetcTest, FloatCaseLabelsOfASwitchOnAFloatBecomeIntegers) {
+  write_all(dir_ / "l.shader",
+            pass_shader("", "    float _Strength;\n" + std::string(kVert) +
+                                "    float4 frag() : SV_Target {\n      switch (_Strength) {\n        case 0.0: return 0;\n"
+                                "        case 1.0f: return 0.5;\n        case -2.: return 0.25;\n        default: return 1;\n"
+                                "      }\n    }\n"));
+  FacetcRun build = facetc({"l.shader", "-o", "l.facetpkg"});
+  EXPECT_EQ(build.exit_code, 0) << build.err;
+  // A switch on an int with two equal labels stays the user's error.
+  write_all(dir_ / "d.shader",
+            pass_shader("", "    int _Mode;\n" + std::string(kVert) +
+                                "    float4 frag() : SV_Target {\n      switch (_Mode) { case 1: return 0; case 1: return 1; "
+                                "default: return 2; }\n    }\n"));
+  FacetcRun dup = facetc({"d.shader", "-o", "d.facetpkg"});
+  EXPECT_EQ(dup.exit_code, 1);
+  EXPECT_THAT(dup.err, HasSubstr("'case': duplicated value"));
+}
+
 // Debian's glslang 12 throws std::length_error from its preprocessor's
 // output writer when a '##' with an empty argument inside another macro's
 // argument runs to the end of an included file (a token at column 0): a
