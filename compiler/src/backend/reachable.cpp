@@ -4,6 +4,7 @@
 #include "backend/reachable.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <optional>
 #include <set>
@@ -257,9 +258,11 @@ std::string with_static_initializers_in_entry(const std::string& text, const std
 
 namespace {
 
-bool iequal(std::string_view a, std::string_view b) {
+// HLSL semantics ignore case. (sema and shaderlab have their own iequals;
+// one shared home for it is still to be made.)
+bool same_semantic(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return (x | 0x20) == (y | 0x20);
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
          });
 }
 
@@ -289,8 +292,8 @@ std::optional<FacingParameter> facing_parameter(std::string_view p) {
   }
   if (!words.empty() && words[0] == "in") words.erase(words.begin());
   if (words.size() != 4 || words[2] != ":" || !ident_start(words[1][0])) return std::nullopt;
-  bool vface = iequal(words[3], "VFACE");
-  if (!vface && !iequal(words[3], "SV_IsFrontFace")) return std::nullopt;
+  bool vface = same_semantic(words[3], "VFACE");
+  if (!vface && !same_semantic(words[3], "SV_IsFrontFace")) return std::nullopt;
   if (words[0] == "bool") return std::nullopt;
   return FacingParameter{std::string(words[0]), std::string(words[1]), vface};
 }
