@@ -44,7 +44,8 @@ cbuffer FacetPerFrame : register(b0, space0)
     float4 unity_SpecCube0_BoxMin;
     float4 unity_SpecCube0_ProbePosition;
 };
-samplerCUBE unity_SpecCube0 : register(s1, space0);       // prefiltered environment radiance
+TextureCube unity_SpecCube0 : register(t1, space0);       // prefiltered environment radiance
+SamplerState samplerunity_SpecCube0 : register(s4, space0); // its sampler, which unity_SpecCube1 shares
 // _CameraDepthTexture is not declared here: as in Unity, a shader that reads
 // the camera's depth declares `sampler2D _CameraDepthTexture;` itself (the
 // name is the convention), so it lands in the material set like any texture
@@ -96,7 +97,7 @@ cbuffer FacetPerFrameUnity : register(b2, space0)
     float4 unity_SpecCube1_ProbePosition;
     float4 unity_SpecCube1_HDR;
 };
-samplerCUBE unity_SpecCube1 : register(s3, space0);       // second (blend) reflection probe
+TextureCube unity_SpecCube1 : register(t3, space0);       // second (blend) reflection probe, sampled with samplerunity_SpecCube0
 
 cbuffer FacetPerLightUnity : register(b3, space1)
 {

@@ -25,7 +25,7 @@ float FacetPerceptualRoughnessToMip(float perceptualRoughness)
 float3 FacetGlossyEnvironment(float3 dir, float perceptualRoughness, float4 hdr)
 {
     float mip = FacetPerceptualRoughnessToMip(perceptualRoughness);
-    float4 rgbm = texCUBElod(unity_SpecCube0, float4(dir, mip));
+    float4 rgbm = unity_SpecCube0.SampleLevel(samplerunity_SpecCube0, dir, mip);
     return FacetDecodeHDR(rgbm, hdr);
 }
 

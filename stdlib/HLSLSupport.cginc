@@ -45,38 +45,43 @@
 #define UNITY_POSITION(pos) float4 pos : SV_POSITION
 #define UNITY_VPOS_TYPE float4
 
-// 2D textures: Unity's separate-sampler path (Direct3D 11, Vulkan, Metal):
-// a texture object plus a sampler named sampler<tex>, so code may pass
-// either on (`_MainTex.SampleGrad(sampler_MainTex, ...)`, one sampler for
-// several textures). Cubes and 3D textures keep the combined DX9 form, which
-// the frame's built-ins (unity_SpecCube0, ...) use.
+// 2D and cube textures: Unity's separate-sampler path (Direct3D 11, Vulkan,
+// Metal): a texture object plus a sampler named sampler<tex>, so code may
+// pass either on (`_MainTex.SampleGrad(sampler_MainTex, ...)`, one sampler
+// for several textures, `IsEmpty(TextureCube)` overloads on
+// unity_SpecCube0). 3D textures keep the combined DX9 form.
 #define UNITY_DECLARE_TEX2D(tex) Texture2D tex; SamplerState sampler##tex
 #define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) Texture2D tex
-#define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
-#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#define UNITY_DECLARE_TEXCUBE(tex) TextureCube tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) TextureCube tex
 #define UNITY_DECLARE_TEX3D(tex) sampler3D tex
-// Sampling goes through overloads, so that the frame's 2D built-ins, which
-// are combined samplers (unity_Lightmap, unity_ShadowMask, ...: their
-// sampler<tex> names the texture itself, FacetBuiltins.hlsl), sample too.
+// Sampling goes through overloads, so that combined samplers sample too:
+// the frame's 2D built-ins (unity_Lightmap, unity_ShadowMask, ...: their
+// sampler<tex> names the texture itself, FacetBuiltins.hlsl), and a
+// program's own `samplerCUBE _Cube; #define sampler_Cube _Cube`.
 float4 FacetSampleTex2D(Texture2D tex, SamplerState s, float2 uv) { return tex.Sample(s, uv); }
 float4 FacetSampleTex2D(sampler2D tex, sampler2D s, float2 uv) { return tex2D(tex, uv); }
 float4 FacetSampleTex2DLod(Texture2D tex, SamplerState s, float2 uv, float lod) { return tex.SampleLevel(s, uv, lod); }
 float4 FacetSampleTex2DLod(sampler2D tex, sampler2D s, float2 uv, float lod) { return tex2Dlod(tex, float4(uv, 0, lod)); }
+float4 FacetSampleTexCube(TextureCube tex, SamplerState s, float3 dir) { return tex.Sample(s, dir); }
+float4 FacetSampleTexCube(samplerCUBE tex, samplerCUBE s, float3 dir) { return texCUBE(tex, dir); }
+float4 FacetSampleTexCubeLod(TextureCube tex, SamplerState s, float3 dir, float lod) { return tex.SampleLevel(s, dir, lod); }
+float4 FacetSampleTexCubeLod(samplerCUBE tex, samplerCUBE s, float3 dir, float lod) { return texCUBElod(tex, float4(dir, lod)); }
 #define UNITY_SAMPLE_TEX2D(tex, coord) FacetSampleTex2D(tex, sampler##tex, coord)
 #define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) FacetSampleTex2D(tex, sampler##samplertex, coord)
 #define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) FacetSampleTex2DLod(tex, sampler##tex, coord, lod)
-#define UNITY_SAMPLE_TEXCUBE(tex, coord) texCUBE(tex, coord)
-#define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) texCUBElod(tex, float4(coord, lod))
-#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) texCUBE(tex, coord)
-#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) texCUBElod(tex, float4(coord, lod))
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) FacetSampleTex2DLod(tex, sampler##samplertex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBE(tex, coord) FacetSampleTexCube(tex, sampler##tex, coord)
+#define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) FacetSampleTexCubeLod(tex, sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) FacetSampleTexCube(tex, sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) FacetSampleTexCubeLod(tex, sampler##samplertex, coord, lod)
 #define UNITY_SAMPLE_TEX3D(tex, coord) tex3D(tex, coord)
 #define UNITY_PASS_TEX2D(tex) tex, sampler##tex
-#define UNITY_PASS_TEXCUBE(tex) tex
-#define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex
-#define UNITY_PASS_TEXCUBE_SAMPLER_LOD(tex, samplertex, lod) tex
+#define UNITY_PASS_TEXCUBE(tex) tex, sampler##tex
+#define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex, sampler##samplertex
+#define UNITY_PASS_TEXCUBE_SAMPLER_LOD(tex, samplertex, lod) tex, sampler##samplertex, lod
 #define UNITY_ARGS_TEX2D(tex) Texture2D tex, SamplerState sampler##tex
-#define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
-#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) FacetSampleTex2DLod(tex, sampler##samplertex, coord, lod)
+#define UNITY_ARGS_TEXCUBE(tex) TextureCube tex, SamplerState sampler##tex
 
 // fxc still reads Direct3D 9 effect files' lower-case texture types
 // (`texture2D _OutlineTexture;`), which glslang does not know.

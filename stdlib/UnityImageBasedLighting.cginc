@@ -24,12 +24,12 @@ Unity_GlossyEnvironmentData UnityGlossyEnvironmentSetup(half Smoothness, half3 w
 
 half perceptualRoughnessToMipmapLevel(half perceptualRoughness) { return FacetPerceptualRoughnessToMip(perceptualRoughness); }
 
-// facet has one probe texture: the cube argument names it for source
-// compatibility (UNITY_PASS_TEXCUBE(unity_SpecCube0)) and is sampled.
-half3 Unity_GlossyEnvironment(samplerCUBE tex, half4 hdr, Unity_GlossyEnvironmentData glossIn)
+// The probe comes as Unity passes it: UNITY_PASS_TEXCUBE(unity_SpecCube0),
+// or UNITY_PASS_TEXCUBE_SAMPLER(unity_SpecCube1, unity_SpecCube0).
+half3 Unity_GlossyEnvironment(UNITY_ARGS_TEXCUBE(tex), half4 hdr, Unity_GlossyEnvironmentData glossIn)
 {
     half mip = perceptualRoughnessToMipmapLevel(glossIn.roughness);
-    half4 rgbm = texCUBElod(tex, float4(glossIn.reflUVW, mip));
+    half4 rgbm = UNITY_SAMPLE_TEXCUBE_LOD(tex, glossIn.reflUVW, mip);
     return DecodeHDR(rgbm, hdr);
 }
 

@@ -263,10 +263,30 @@ class StateLowering {
   std::optional<ir::StateValue> stencil_value(const ast::StencilField& f) {
     std::string command = "Stencil " + f.name;
     if (iequals(f.name, "Ref") || iequals(f.name, "ReadMask") || iequals(f.name, "WriteMask")) {
-      return int_value(f.value, 0, 255, command, ctx_);
+      return stencil_byte(f.value, command);
     }
     bool comparison = f.name.size() >= 4 && iequals(std::string_view(f.name).substr(0, 4), "Comp");
     return word_value(f.value, comparison ? Values(kCompare) : Values(kStencilOps), command, ctx_);
+  }
+
+  // Unity takes any 32-bit value here (D3D's StencilRef is a UINT) and the
+  // GPU compares only the stencil buffer's 8 bits, so a wider value is kept
+  // as its low byte, with a warning, rather than refused.
+  std::optional<ir::StateValue> stencil_byte(const ast::Value& v, const std::string& command) {
+    constexpr long kMax32 = 4294967295L;
+    std::optional<ir::StateValue> wide = v.kind == ast::Value::Kind::number && !v.text.empty() && v.text[0] != '-'
+                                             ? int_value(v, 0, kMax32, command, ctx_)
+                                             : int_value(v, 0, 255, command, ctx_);
+    if (!wide || wide->is_property()) return wide;
+    long value = std::stol(wide->literal);
+    if (value <= 255) return wide;
+    std::string low = std::to_string(value & 0xFF);
+    ctx_.report(DiagId::sema_stencil_value_truncated, v.span,
+                "'" + command + " " + v.text + "' is wider than the 8-bit stencil buffer; its low 8 bits, " + low +
+                    ", are used")
+        .note({}, "write a value from 0 to 255 to say which bits are meant");
+    wide->literal = low;
+    return wide;
   }
 
   Context& ctx_;

@@ -46,7 +46,7 @@ std::vector<Use> builtin_uses() {
                         "unity_SHBg", "unity_SHBb", "unity_SHC", "unity_SpecCube0_HDR",
                         "unity_ColorSpaceDielectricSpec"})
     u.push_back(uniform(n));
-  u.push_back(frag("unity_SpecCube0", "acc += texCUBE(unity_SpecCube0, i.n);"));
+  u.push_back(frag("unity_SpecCube0", "acc += unity_SpecCube0.Sample(samplerunity_SpecCube0, i.n);"));
   // By convention the program declares the camera depth itself (docs/binding-model.md).
   u.push_back({"_CameraDepthTexture", "sampler2D _CameraDepthTexture;", "", "",
                "acc += tex2D(_CameraDepthTexture, i.uv);"});
@@ -73,7 +73,7 @@ std::vector<Use> builtin_uses() {
   u.push_back(frag("Linear01Depth", "acc.x += Linear01Depth(i.uv.x);"));
   u.push_back(frag("LinearEyeDepth", "acc.x += LinearEyeDepth(i.uv.x);"));
   u.push_back(frag("UnpackNormal", "acc.xyz += UnpackNormal(float4(i.uv, 0.5, 1));"));
-  u.push_back(frag("DecodeHDR", "acc.xyz += DecodeHDR(texCUBE(unity_SpecCube0, i.n), unity_SpecCube0_HDR);"));
+  u.push_back(frag("DecodeHDR", "acc.xyz += DecodeHDR(UNITY_SAMPLE_TEXCUBE(unity_SpecCube0, i.n), unity_SpecCube0_HDR);"));
   u.push_back(frag("ShadeSH9", "acc.xyz += ShadeSH9(float4(i.n, 1));"));
   u.push_back(frag("UNITY_SAMPLE_TEXCUBE", "acc += UNITY_SAMPLE_TEXCUBE(unity_SpecCube0, i.n);"));
   u.push_back(frag("UNITY_SAMPLE_TEXCUBE_LOD", "acc += UNITY_SAMPLE_TEXCUBE_LOD(unity_SpecCube0, i.n, 2.0);"));

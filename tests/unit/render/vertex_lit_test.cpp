@@ -110,7 +110,9 @@ TEST_F(VertexLitTest, AVertexPassIsSkippedWhenTheShaderHasForwardPasses) {
   EXPECT_EQ(test_support::count_draws(f, "Vertex"), 0u);
   ASSERT_EQ(test_support::count_draws(f, "Vertex", false), 1u);
   for (const DrawRecord& d : f.draws) {
-    if (d.light_mode == "Vertex") EXPECT_NE(d.why.find("forward passes"), std::string::npos) << d.why;
+    if (d.light_mode == "Vertex") {
+      EXPECT_NE(d.why.find("forward passes"), std::string::npos) << d.why;
+    }
   }
 }
 

@@ -152,8 +152,12 @@ INSTANTIATE_TEST_SUITE_P(
                   "unknown value 'RR' for 'ColorMask'", ""},
         ErrorCase{"render_target", "Blend 9 One One", DiagId::sema_bad_render_target, 7,
                   "render target index must be an integer from 0 to 7, not '9'", ""},
-        ErrorCase{"stencil_ref", "Stencil { Ref 256 }", DiagId::sema_unknown_state_value, 15,
-                  "'Stencil Ref' expects an integer from 0 to 255, not '256'", "[_Prop]"},
+        ErrorCase{"stencil_ref_negative", "Stencil { Ref -1 }", DiagId::sema_unknown_state_value, 15,
+                  "'Stencil Ref' expects an integer from 0 to 255, not '-1'", "[_Prop]"},
+        ErrorCase{"stencil_mask_fraction", "Stencil { ReadMask 2.5 }", DiagId::sema_unknown_state_value, 20,
+                  "'Stencil ReadMask' expects an integer from 0 to 4294967295, not '2.5'", "[_Prop]"},
+        ErrorCase{"stencil_ref_past_32_bits", "Stencil { Ref 4294967296 }", DiagId::sema_unknown_state_value, 15,
+                  "'Stencil Ref' expects an integer from 0 to 4294967295, not '4294967296'", "[_Prop]"},
         ErrorCase{"stencil_comp", "Stencil { Comp Replace }", DiagId::sema_unknown_state_value, 16,
                   "unknown value 'Replace' for 'Stencil Comp'", "Less, Greater, LEqual"},
         ErrorCase{"stencil_op", "Stencil { PassBack Always }", DiagId::sema_unknown_state_value, 20,
@@ -230,6 +234,21 @@ TEST(SemaRenderStateTest, DuplicateCommandWarnsAndLastWins) {
   EXPECT_EQ(a->at(d->notes.at(0).span).line, 2u);
   EXPECT_EQ(a->diags.warning_count(), 1u);  // different render targets are not duplicates
   EXPECT_EQ(a->ir->subshaders[0].passes[0].state.cull->literal, "Back");
+}
+
+// Unity accepts a 32-bit stencil value and the GPU compares 8 bits of it.
+TEST(SemaRenderStateTest, StencilValueWiderThanEightBitsWarnsAndKeepsItsLowByte) {
+  auto a = analyze_text(in_pass("Stencil { Ref 901 WriteMask 256 Comp Always }"));
+  ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
+  EXPECT_EQ(pass_state(*a), R"({"Stencil":{"Ref":"133","WriteMask":"0","Comp":"Always"}})");
+  ASSERT_EQ(a->diags.warning_count(), 2u);
+  const Diagnostic* d = a->find(DiagId::sema_stencil_value_truncated);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::warning);
+  EXPECT_EQ(diag_group(d->id), "stencil");
+  EXPECT_EQ(a->at(d->span).line, 2u);
+  EXPECT_EQ(a->at(d->span).column, 15u);
+  EXPECT_EQ(d->message, "'Stencil Ref 901' is wider than the 8-bit stencil buffer; its low 8 bits, 133, are used");
 }
 
 TEST(SemaRenderStateTest, PropertyReferencesStaySymbolic) {
