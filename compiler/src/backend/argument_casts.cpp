@@ -1,4 +1,4 @@
-#include "backend/argument_casts.h"
+#include "argument_casts.h"
 
 #include <algorithm>
 #include <cctype>

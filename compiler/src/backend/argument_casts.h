@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "backend/info_log.h"
+#include "info_log.h"
 #include "facet/ir.h"
 
 namespace facet::backend {

@@ -13,16 +13,16 @@
 #include <memory>
 #include <optional>
 
-#include "backend/argument_casts.h"
-#include "backend/glslang_frontend.h"
-#include "backend/hlsl_rewrite.h"
-#include "backend/includer.h"
-#include "backend/info_log.h"
-#include "backend/reflect.h"
-#include "backend/source_assembly.h"
-#include "backend/spirv_fixup.h"
-#include "backend/spirv_tools.h"
-#include "backend/worker.h"
+#include "argument_casts.h"
+#include "glslang_frontend.h"
+#include "hlsl_rewrite.h"
+#include "includer.h"
+#include "info_log.h"
+#include "reflect.h"
+#include "source_assembly.h"
+#include "spirv_fixup.h"
+#include "spirv_tools.h"
+#include "worker.h"
 
 namespace facet::backend {
 namespace {

@@ -3,7 +3,7 @@
 // glslang -> log to diagnostics -> check -> legalise -> spirv-opt -> spirv-val.
 // Stage has no compute member (ShaderLab programs have no compute stage), so
 // this file drives glslang itself instead of going through run_glslang.
-#include "backend/includer.h"  // first: defines ENABLE_HLSL for glslang's headers
+#include "includer.h"  // first: defines ENABLE_HLSL for glslang's headers
 
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -13,10 +13,10 @@
 #include <memory>
 #include <string_view>
 
-#include "backend/info_log.h"
-#include "backend/source_assembly.h"
-#include "backend/spirv_tools.h"
-#include "backend/worker.h"
+#include "info_log.h"
+#include "source_assembly.h"
+#include "spirv_tools.h"
+#include "worker.h"
 #include "facet/backend.h"
 
 namespace facet::backend {

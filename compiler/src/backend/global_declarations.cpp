@@ -1,7 +1,7 @@
 // A coarse reading of top-level declarations: it only has to find the two
 // forms below in text glslang is about to parse, and says nothing about
 // anything it does not understand.
-#include "backend/global_declarations.h"
+#include "global_declarations.h"
 
 #include <fmt/format.h>
 

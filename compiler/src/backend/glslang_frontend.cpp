@@ -1,8 +1,8 @@
-#include "backend/glslang_frontend.h"
+#include "glslang_frontend.h"
 
-#include "backend/global_declarations.h"
-#include "backend/hlsl_rewrite.h"
-#include "backend/reachable.h"
+#include "global_declarations.h"
+#include "hlsl_rewrite.h"
+#include "facet/reachability.h"
 
 #include <fmt/format.h>
 #include <glslang/MachineIndependent/localintermediate.h>

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "backend/includer.h"
-#include "backend/source_assembly.h"
+#include "includer.h"
+#include "source_assembly.h"
 #include "facet/backend.h"
 
 namespace glslang {

@@ -1,4 +1,4 @@
-#include "backend/hlsl_rewrite.h"
+#include "hlsl_rewrite.h"
 
 #include <algorithm>
 #include <optional>

@@ -1,7 +1,7 @@
-#include "backend/includer.h"
+#include "includer.h"
 
-#include "backend/hlsl_rewrite.h"
-#include "backend/source_assembly.h"
+#include "hlsl_rewrite.h"
+#include "source_assembly.h"
 
 #include <fmt/format.h>
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "backend/macro_budget.h"
-#include "backend/source_assembly.h"
+#include "macro_budget.h"
+#include "source_assembly.h"
 #include "facet/backend.h"
 
 namespace facet::backend {

@@ -1,11 +1,11 @@
-#include "backend/info_log.h"
+#include "info_log.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-#include "backend/names_in_scope.h"
+#include "names_in_scope.h"
 
 namespace facet::backend {
 namespace {

@@ -14,8 +14,8 @@
 #include <string_view>
 #include <vector>
 
-#include "backend/includer.h"
-#include "backend/source_assembly.h"
+#include "includer.h"
+#include "source_assembly.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 

@@ -1,4 +1,4 @@
-#include "backend/macro_budget.h"
+#include "macro_budget.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "backend/names_in_scope.h"
+#include "names_in_scope.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <array>
 #include <set>
 
-#include "common/suggest.h"
+#include "facet/support/suggest.h"
 
 namespace facet::backend {
 namespace {

@@ -13,12 +13,12 @@
 #include <cctype>
 #include <set>
 
-#include "backend/argument_casts.h"
-#include "backend/glslang_frontend.h"
-#include "backend/includer.h"
-#include "backend/info_log.h"
-#include "backend/source_assembly.h"
-#include "backend/worker.h"
+#include "argument_casts.h"
+#include "glslang_frontend.h"
+#include "includer.h"
+#include "info_log.h"
+#include "source_assembly.h"
+#include "worker.h"
 
 namespace facet::backend {
 namespace {

@@ -1,6 +1,6 @@
-#include "backend/reflect.h"
+#include "reflect.h"
 
-#include "backend/hlsl_rewrite.h"
+#include "hlsl_rewrite.h"
 
 #include <spirv_cross/spirv_cross.hpp>
 

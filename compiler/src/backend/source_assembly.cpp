@@ -1,6 +1,6 @@
-#include "backend/source_assembly.h"
+#include "source_assembly.h"
 
-#include "backend/hlsl_rewrite.h"
+#include "hlsl_rewrite.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "backend/spirv_fixup.h"
+#include "spirv_fixup.h"
 
 #include <spirv_cross/spirv.hpp>
 

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "backend/glslang_frontend.h"
+#include "glslang_frontend.h"
 #include "facet/stage.h"
 
 namespace facet::backend {

@@ -1,4 +1,4 @@
-#include "backend/spirv_tools.h"
+#include "spirv_tools.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "backend/worker.h"
+#include "worker.h"
 
 #include <pthread.h>
 #include <unistd.h>

@@ -15,7 +15,7 @@
 #include <span>
 
 #include "facet/cache.h"
-#include "common/binary_codec.h"
+#include "facet/support/binary_codec.h"
 #include "facet_build_id.h"
 
 namespace facet::cache {

@@ -1,4 +1,4 @@
-#include "common/binary_codec.h"
+#include "facet/support/binary_codec.h"
 
 #include <bit>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // pretty_json: see common/json_print.h.
-#include "common/json_print.h"
+#include "facet/support/json_print.h"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 // encoded size of each element bounds the counts the decoder accepts.
 #include <string>
 
-#include "common/binary_codec.h"
+#include "facet/support/binary_codec.h"
 
 namespace facet::codec {
 namespace {

@@ -1,5 +1,5 @@
 // Edit distances for "did you mean" notes.
-#include "common/suggest.h"
+#include "facet/support/suggest.h"
 
 #include <algorithm>
 #include <vector>

@@ -13,7 +13,7 @@
 #include <map>
 #include <set>
 
-#include "driver/build_plan.h"
+#include "build_plan.h"
 
 namespace facet {
 

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <thread>
 
-#include "driver/build_plan.h"
+#include "build_plan.h"
 
 namespace facet::driver {
 namespace {

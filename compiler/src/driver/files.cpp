@@ -11,7 +11,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "driver/files.h"
+#include "files.h"
 #include "facet/compiler.h"
 
 namespace facet {

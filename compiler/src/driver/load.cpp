@@ -1,5 +1,5 @@
 // Compiler::load*: text in, validated ShaderIr out.
-#include "driver/files.h"
+#include "files.h"
 #include "facet/compiler.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"

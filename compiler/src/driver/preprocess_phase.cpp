@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <mutex>
 
-#include "driver/build_plan.h"
-#include "backend/reachable.h"
+#include "build_plan.h"
+#include "facet/reachability.h"
 
 namespace facet::driver {
 namespace {

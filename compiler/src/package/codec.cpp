@@ -1,4 +1,4 @@
-#include "package/codec.h"
+#include "codec.h"
 
 
 namespace facet::package::codec {

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "common/binary_codec.h"
+#include "facet/support/binary_codec.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/package.h"

@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "facet/package.h"
-#include "package/codec.h"
+#include "codec.h"
 
 namespace facet::package {
 namespace {

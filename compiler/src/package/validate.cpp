@@ -7,7 +7,7 @@
 #include <xxhash.h>
 
 #include "facet/package.h"
-#include "package/codec.h"
+#include "codec.h"
 
 namespace facet::package {
 namespace {

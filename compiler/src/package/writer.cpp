@@ -7,7 +7,7 @@
 #include <unordered_map>
 
 #include "facet/package.h"
-#include "package/codec.h"
+#include "codec.h"
 
 namespace facet::package {
 namespace {

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "facet/report.h"
-#include "report/findings.h"
+#include "findings.h"
 
 namespace facet::report {
 namespace {

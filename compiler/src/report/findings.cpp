@@ -1,6 +1,6 @@
 // Which keywords are dead, misspelt or free to drop from a stage, and what
 // changing a keyword set would save.
-#include "report/findings.h"
+#include "findings.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "common/suggest.h"
+#include "facet/support/suggest.h"
 
 namespace facet::report {
 namespace {

@@ -2,7 +2,7 @@
 // #pragma and #ifdef lines as the preprocessor would see them, without
 // preprocessing. Lines are joined at backslash-newline first, then comments
 // are removed (a block comment may span lines), as in translation phases 2-3.
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

@@ -4,7 +4,7 @@
 // in that order, so the inner scope wins per command.
 #include <algorithm>
 
-#include "sema/fixed_function.h"
+#include "fixed_function.h"
 
 namespace facet::sema {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::sema {
 

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <map>
 
-#include "sema/fixed_function.h"
+#include "fixed_function.h"
 
 namespace facet::sema {
 namespace {

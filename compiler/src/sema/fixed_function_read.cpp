@@ -4,7 +4,7 @@
 // malformed command is one located error and leaves the state as it was.
 #include <algorithm>
 
-#include "sema/fixed_function.h"
+#include "fixed_function.h"
 
 namespace facet::sema {
 namespace {

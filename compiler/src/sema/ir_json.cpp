@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "common/json_print.h"
+#include "facet/support/json_print.h"
 #include "facet/sema.h"
 
 namespace facet::sema {

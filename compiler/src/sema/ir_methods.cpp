@@ -1,6 +1,6 @@
 // The few member functions of the plain IR types (facet/ir.h).
 #include "facet/ir.h"
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::ir {
 

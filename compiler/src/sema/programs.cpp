@@ -5,7 +5,7 @@
 #include <array>
 #include <cctype>
 
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

@@ -6,8 +6,8 @@
 #include <array>
 #include <unordered_map>
 
-#include "common/suggest.h"
-#include "sema/lower.h"
+#include "facet/support/suggest.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

@@ -3,8 +3,8 @@
 // inward: Category -> SubShader -> Pass, the inner scope winning.
 #include "facet/sema.h"
 
-#include "sema/fixed_function.h"
-#include "sema/lower.h"
+#include "fixed_function.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

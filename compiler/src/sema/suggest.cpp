@@ -1,7 +1,7 @@
 // "did you mean" for misspelt names (the distance is common/suggest.h's) and
 // small text helpers of sema.
-#include "common/suggest.h"
-#include "sema/lower.h"
+#include "facet/support/suggest.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

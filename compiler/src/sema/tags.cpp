@@ -1,7 +1,7 @@
 // Tags are kept as written; only the values facet interprets are checked.
 #include <charconv>
 
-#include "sema/lower.h"
+#include "lower.h"
 
 namespace facet::sema {
 namespace {

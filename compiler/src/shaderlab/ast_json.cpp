@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "common/json_print.h"
+#include "facet/support/json_print.h"
 #include "facet/shaderlab.h"
 
 namespace facet::shaderlab {

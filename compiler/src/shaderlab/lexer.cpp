@@ -1,4 +1,4 @@
-#include "shaderlab/lexer.h"
+#include "lexer.h"
 
 #include <charconv>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <string_view>
 
 #include "facet/shaderlab.h"
-#include "shaderlab/reporter.h"
+#include "reporter.h"
 
 namespace facet::shaderlab {
 

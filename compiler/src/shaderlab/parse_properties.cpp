@@ -5,7 +5,7 @@
 // so that one misspelt type does not hide the rest of the block.
 #include <cmath>
 
-#include "shaderlab/parser.h"
+#include "parser.h"
 
 namespace facet::shaderlab {
 namespace {

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <array>
 
-#include "shaderlab/parser.h"
+#include "parser.h"
 
 namespace facet::shaderlab {
 namespace {

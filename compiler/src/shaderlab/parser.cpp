@@ -1,7 +1,7 @@
 // Structure of a .shader file: Shader, Properties, Category, SubShader, Pass,
 // UsePass, GrabPass, Fallback, CustomEditor, program blocks. Commands shared
 // by every scope are in parse_state.cpp, properties in parse_properties.cpp.
-#include "shaderlab/parser.h"
+#include "parser.h"
 
 #include <algorithm>
 #include <cmath>

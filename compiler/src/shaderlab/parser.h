@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "facet/shaderlab.h"
-#include "shaderlab/lexer.h"
-#include "shaderlab/reporter.h"
+#include "lexer.h"
+#include "reporter.h"
 
 namespace facet::shaderlab {
 

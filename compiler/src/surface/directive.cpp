@@ -1,4 +1,4 @@
-#include "surface/directive.h"
+#include "directive.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "surface/generate.h"
+#include "generate.h"
 
 #include <fmt/format.h>
 

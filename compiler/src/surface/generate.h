@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "surface/directive.h"
-#include "surface/shape.h"
+#include "directive.h"
+#include "shape.h"
 
 namespace facet::surface {
 

@@ -5,9 +5,9 @@
 
 #include "facet/program_analysis.h"
 #include "facet/surface.h"
-#include "surface/directive.h"
-#include "surface/generate.h"
-#include "surface/shape.h"
+#include "directive.h"
+#include "generate.h"
+#include "shape.h"
 
 namespace facet::surface {
 namespace {

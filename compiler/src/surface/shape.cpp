@@ -1,4 +1,4 @@
-#include "surface/shape.h"
+#include "shape.h"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "facet/program_analysis.h"
-#include "surface/directive.h"
+#include "directive.h"
 
 namespace facet::surface {
 

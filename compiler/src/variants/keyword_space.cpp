@@ -10,9 +10,9 @@
 #include <string_view>
 #include <utility>
 
-#include "common/suggest.h"
+#include "facet/support/suggest.h"
 #include "facet/variants.h"
-#include "variants/shortcuts.h"
+#include "shortcuts.h"
 
 namespace facet::variants {
 namespace {

@@ -6,7 +6,7 @@
 #include <unordered_set>
 
 #include "facet/variants.h"
-#include "variants/view.h"
+#include "view.h"
 
 namespace facet::variants {
 namespace {

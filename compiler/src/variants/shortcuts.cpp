@@ -1,4 +1,4 @@
-#include "variants/shortcuts.h"
+#include "shortcuts.h"
 
 #include <sstream>
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/suggest.h"
+#include "facet/support/suggest.h"
 #include "facet/variants.h"
 
 namespace facet::runtime {

@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "backend/info_log.h"
-#include "backend/source_assembly.h"
-#include "backend/worker.h"
+#include "info_log.h"
+#include "source_assembly.h"
+#include "worker.h"
 #include "backend_test_util.h"
 
 namespace facet::backend {

@@ -3,7 +3,7 @@
 
 #include <map>
 
-#include "backend/glslang_frontend.h"
+#include "glslang_frontend.h"
 #include "backend_test_util.h"
 
 namespace facet::backend {

@@ -1,5 +1,5 @@
 // find_declaration_problem on preprocessed text: what it refuses and where.
-#include "backend/global_declarations.h"
+#include "global_declarations.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 
 #include <map>
 
-#include "backend/source_assembly.h"
+#include "source_assembly.h"
 #include "backend_test_util.h"
 
 namespace facet::backend {

@@ -2,7 +2,7 @@
 // element reads; global uniforms a program assigns become static copies.
 #include <gtest/gtest.h>
 
-#include "backend/hlsl_rewrite.h"
+#include "hlsl_rewrite.h"
 
 namespace facet::backend {
 namespace {

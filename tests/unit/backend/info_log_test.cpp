@@ -1,5 +1,5 @@
 // Parsing glslang's info log, without glslang.
-#include "backend/info_log.h"
+#include "info_log.h"
 
 #include <gtest/gtest.h>
 

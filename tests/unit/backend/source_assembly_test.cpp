@@ -1,5 +1,5 @@
 // What the back end hands to glslang.
-#include "backend/source_assembly.h"
+#include "source_assembly.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The semantic -> location table and the material-set binding rule.
-#include "backend/spirv_fixup.h"
+#include "spirv_fixup.h"
 
 #include <gtest/gtest.h>
 

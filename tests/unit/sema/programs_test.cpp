@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "facet/sema.h"
-#include "sema/lower.h"
+#include "lower.h"
 #include "sema_test_util.h"
 
 namespace facet::sema {

@@ -1,7 +1,7 @@
 // A coarse split of preprocessed HLSL into top-level items and a call-graph
 // walk from the entry point. It never needs to be exact about the language:
 // anything it cannot split keeps the whole text, which only costs a compile.
-#include "backend/reachable.h"
+#include "facet/reachability.h"
 
 #include <algorithm>
 #include <cctype>

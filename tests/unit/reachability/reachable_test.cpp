@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "backend/reachable.h"
+#include "facet/reachability.h"
 
 namespace facet {
 namespace {
