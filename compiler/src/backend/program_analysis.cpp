@@ -1,6 +1,7 @@
 // analyze_program: glslang's AST of a parsed (not compiled) program, walked
 // once for function signatures and struct-member reads and writes.
 #include "facet/program_analysis.h"
+#include "facet/support/text.h"
 
 #include <glslang/Include/intermediate.h>
 #include <memory>
@@ -29,11 +30,6 @@ std::string type_name(const glslang::TType& type) {
   if (type.isMatrix()) return base + std::to_string(type.getMatrixRows()) + "x" + std::to_string(type.getMatrixCols());
   if (type.isVector()) return base + std::to_string(type.getVectorSize());
   return base;
-}
-
-std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return s;
 }
 
 std::string semantic_of(const glslang::TType& type) {

@@ -10,15 +10,10 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include "facet/support/text.h"
 
 namespace facet::backend {
 namespace {
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return out;
-}
 
 // `#line` takes a string literal; glslang has no escapes in it, so quotes
 // and backslashes in a path are replaced.

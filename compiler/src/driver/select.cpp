@@ -6,15 +6,10 @@
 #include <charconv>
 
 #include "facet/compiler.h"
+#include "facet/support/text.h"
 
 namespace facet {
 namespace {
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return out;
-}
 
 std::optional<size_t> parse_index(const std::string& text) {
   size_t value = 0;

@@ -2,6 +2,7 @@
 // walk from the entry point. It never needs to be exact about the language:
 // anything it cannot split keeps the whole text, which only costs a compile.
 #include "facet/reachability.h"
+#include "facet/support/text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -258,13 +259,8 @@ std::string with_static_initializers_in_entry(const std::string& text, const std
 
 namespace {
 
-// HLSL semantics ignore case. (sema and shaderlab have their own iequals;
-// one shared home for it is still to be made.)
-bool same_semantic(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
+// HLSL semantics ignore case.
+bool same_semantic(std::string_view a, std::string_view b) { return iequals(a, b); }
 
 // "[in] TYPE NAME : SEMANTIC" of one parameter: its type, name and
 // semantic, or nullopt for any other shape.

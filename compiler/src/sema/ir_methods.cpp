@@ -7,7 +7,7 @@ namespace facet::ir {
 std::string Pass::tag(std::string_view key) const {
   // The last pair wins, as a later Tags entry overrides an earlier one.
   for (auto it = tags.rbegin(); it != tags.rend(); ++it) {
-    if (sema::iequals(it->key, key)) return it->value;
+    if (iequals(it->key, key)) return it->value;
   }
   return {};
 }

@@ -13,6 +13,7 @@
 #include "facet/ir.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "facet/support/text.h"
 
 namespace facet::sema {
 
@@ -81,6 +82,5 @@ std::vector<Directive> scan_directives(const ir::SourceChunk& chunk);
 std::optional<std::string_view> suggest(std::string_view word, std::span<const std::string_view> candidates);
 // "A, B, C"
 std::string join(std::span<const std::string_view> words);
-bool iequals(std::string_view a, std::string_view b);
 
 }  // namespace facet::sema

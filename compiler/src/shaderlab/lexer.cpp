@@ -8,8 +8,6 @@ namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c; }
-
 // The length of the UTF-8 sequence starting at text[i], 0 when invalid.
 // Rejects overlong forms, surrogates and code points above U+10FFFF.
 size_t utf8_length(std::string_view text, size_t i) {
@@ -47,14 +45,6 @@ constexpr ProgramKeyword kProgramKeywords[] = {
 
 bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (lower(a[i]) != lower(b[i])) return false;
-  }
-  return true;
-}
 
 std::optional<BadByte> find_bad_byte(std::string_view text) {
   size_t i = 0;
@@ -296,9 +286,9 @@ Token Lexer::lex_word(uint32_t start) {
 // textually, so an "ENDCG" inside a program comment also ends the block.
 void Lexer::lex_program(Token& t, std::string_view end_marker) {
   uint32_t i = t.keyword_end;
-  const char first_lower = lower(end_marker[0]);
+  const char first_lower = ascii_lower(end_marker[0]);
   for (; i + end_marker.size() <= text_.size(); ++i) {
-    if (lower(text_[i]) != first_lower) continue;
+    if (ascii_lower(text_[i]) != first_lower) continue;
     if (is_ident_char(text_[i - 1])) continue;
     if (!iequals(text_.substr(i, end_marker.size()), end_marker)) continue;
     size_t after = i + end_marker.size();

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "facet/shaderlab.h"
+#include "facet/support/text.h"
 #include "reporter.h"
 
 namespace facet::shaderlab {
@@ -79,7 +80,5 @@ class Lexer {
 
 bool is_ident_start(char c);
 bool is_ident_char(char c);
-// ASCII case-insensitive equality.
-bool iequals(std::string_view a, std::string_view b);
 
 }  // namespace facet::shaderlab

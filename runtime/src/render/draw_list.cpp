@@ -10,11 +10,6 @@
 
 namespace facet::runtime {
 
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
-}
-
 std::string light_description(const Scene& scene, size_t i) {
   const char* type = scene.lights[i].type == LightType::directional ? "directional"
                      : scene.lights[i].type == LightType::point     ? "point"

@@ -16,6 +16,7 @@
 #include "facet/runtime/render_state.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/buffer.h"
+#include "facet/support/text.h"
 #include "render/frame_values.h"
 #include "render/shaders.h"
 
@@ -52,7 +53,6 @@ struct Draw {
   DrawRecord record;
 };
 
-bool iequals(std::string_view a, std::string_view b);
 // "lights[1] (point)"
 std::string light_description(const Scene& scene, size_t light);
 // A record of pass `pass` of `object` with the object, shader, pass, LightMode and queue filled.

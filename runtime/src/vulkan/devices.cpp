@@ -7,16 +7,11 @@
 #include <charconv>
 
 #include "facet/runtime/vulkan_context.h"
+#include "facet/support/text.h"
 #include "vulkan/device_query.h"
 
 namespace facet::runtime {
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return out;
-}
 
 std::optional<uint32_t> parse_index(const std::string& selector) {
   uint32_t value = 0;
