@@ -2,8 +2,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <new>
 
+#include "image_io/exr_header.h"
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
@@ -17,9 +20,22 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
   return {};
 }
 
+// OpenEXR trusts its header's sizes (exr_header.h); other formats go to
+// OpenImageIO as they are.
+std::optional<std::string> header_problem(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file || !is_exr(file)) return std::nullopt;
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return std::nullopt;
+  file.seekg(0);
+  return exr_header_problem(file, size);
+}
+
 }  // namespace
 
 Result<DecodedImage, std::string> read_image_file(const std::string& path, const ImageLimits& limits) {
+  if (std::optional<std::string> problem = header_problem(path)) return unexpected(*problem);
   auto input = OIIO::ImageInput::open(path);
   if (!input) return unexpected(fmt::format("cannot read the image ({})", OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();

@@ -2,11 +2,14 @@
 // files that once crashed it (each case is the input a fuzzing probe found,
 // or one of its kind). Each must give exit code 1, one message naming the
 // file and where in it, and no output file.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -330,6 +333,77 @@ TEST(HostilePngControl, AHandMadePngWithinTheBudgetRenders) {
   std::string png = write_file("small_grey.png", grey_png(300, 200, 200));
   std::string out = (test_dir() / "small_grey.out.png").string();
   std::string scene = write_scene("small_grey", textured_scene(png));
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
+  std::ostringstream o, e;
+  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+// ---------------------------------------------------------------- EXR headers
+
+// A real 8x8 half-float EXR, written by OpenImageIO.
+std::string small_exr_bytes() {
+  std::filesystem::path path = test_dir() / "small_written.exr";
+  OIIO::ImageBuf image(OIIO::ImageSpec(8, 8, 4, OIIO::TypeDesc::HALF));
+  const float grey[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+  OIIO::ImageBufAlgo::fill(image, grey);
+  EXPECT_TRUE(image.write(path.string())) << image.geterror();
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string little_endian(int32_t v) {
+  auto u = uint32_t(v);
+  return {char(u), char(u >> 8), char(u >> 16), char(u >> 24)};
+}
+
+// The real file with one more attribute at the head of its header.
+std::string exr_with_first_attribute(const std::string& attribute) {
+  std::string real = small_exr_bytes();
+  return real.substr(0, 8) + attribute + real.substr(8);
+}
+
+struct ExrCase {
+  const char* name;
+  std::string attribute;  // put before the real file's first attribute
+  std::string expected;
+};
+
+std::ostream& operator<<(std::ostream& os, const ExrCase& c) { return os << c.name; }
+
+// OpenEXR allocates an attribute's value at its declared size before reading
+// it: the first case (a fuzzer's, reduced) made it allocate 1.7 GB for a
+// file of a few hundred bytes.
+const ExrCase kExrCases[] = {
+    {"attribute_past_the_end", std::string("comment\0string\0", 15) + little_endian(1700000000),
+     "the EXR attribute 'comment' declares 1700000000 bytes; the file has "},
+    {"negative_attribute_size", std::string("comment\0string\0", 15) + little_endian(-5),
+     "the EXR attribute 'comment' declares -5 bytes"},
+    {"name_without_its_end", std::string(40, 'v'),
+     "the EXR header of part 0 has an attribute name without its end (at most 31 characters)"},
+};
+
+class HostileExr : public ::testing::TestWithParam<ExrCase> {};
+
+TEST_P(HostileExr, RenderExitsOneNamingTheTexture) {
+  const ExrCase& c = GetParam();
+  std::string exr = write_file(std::string(c.name) + ".exr", exr_with_first_attribute(c.attribute));
+  Outcome r = render_expecting_failure(c.name, write_scene(c.name, textured_scene(exr)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find(".json: objects[0].material.properties._MainTex: " + exr + ": " + c.expected),
+            std::string::npos)
+      << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
+                         [](const ::testing::TestParamInfo<ExrCase>& info) { return std::string(info.param.name); });
+
+// The negative control: the real file renders, so the header walk passes
+// what OpenEXR writes and the cases above fail for their attribute alone.
+TEST(HostileExrControl, TheRealExrRenders) {
+  std::string exr = write_file("fits.exr", small_exr_bytes());
+  std::string out = (test_dir() / "fits.out.png").string();
+  std::string scene = write_scene("fits", textured_scene(exr));
   std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
   std::ostringstream o, e;
   EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
