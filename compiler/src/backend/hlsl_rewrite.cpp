@@ -1,4 +1,5 @@
 #include "hlsl_rewrite.h"
+#include "facet/support/text.h"
 
 #include <algorithm>
 #include <optional>
@@ -127,12 +128,6 @@ struct DeclarationLine {
   std::vector<Declarator> declarators;
   std::string_view rest;
 };
-
-std::string_view trim(std::string_view s) {
-  size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string_view::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t\r") + 1 - b);
-}
 
 bool is_identifier(std::string_view s) {
   return !s.empty() && !(s[0] >= '0' && s[0] <= '9') && std::all_of(s.begin(), s.end(), is_ident);

@@ -6,17 +6,12 @@
 #include <cctype>
 
 #include "names_in_scope.h"
+#include "facet/support/text.h"
 
 namespace facet::backend {
 namespace {
 
 constexpr std::string_view kIncludeFailure = "Could not process include directive for header name:";
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 

@@ -6,14 +6,13 @@
 #include <unistd.h>
 #include <xxhash.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 #include "facet/cache.h"
+#include "facet/support/atomic_file.h"
 
 namespace facet::cache {
 namespace fs = std::filesystem;
@@ -140,30 +139,9 @@ bool LocalCache::store_bytes(const std::string& key, std::string_view bytes) con
   fs::path target = path_of(key);
   fs::create_directories(target.parent_path(), ec);
   if (ec) return false;
-  // Unique per process, thread and call: concurrent writers never share a temp file.
-  static std::atomic<uint64_t> counter{0};
-  fs::path temp = target;
-  temp += ".tmp." + std::to_string(::getpid()) + "." +
-          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) + "." +
-          std::to_string(counter++);
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      fs::remove(temp, ec);
-      return false;
-    }
-  }
   // Atomic: readers see the old entry or the new one. A directory (or
   // anything else) in the entry's place makes the rename fail: no store.
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    return false;
-  }
-  return true;
+  return bool(support::write_file_atomically(target.string(), bytes));
 }
 
 }  // namespace facet::cache

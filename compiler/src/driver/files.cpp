@@ -1,9 +1,7 @@
 // File input and output for the driver: bounded reads, atomic writes.
 #include <fmt/format.h>
 
-#include <unistd.h>
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +10,7 @@
 #include <system_error>
 
 #include "files.h"
+#include "facet/support/atomic_file.h"
 #include "facet/compiler.h"
 
 namespace facet {
@@ -44,32 +43,8 @@ Result<std::string> read_file(const std::string& path, uint64_t max_bytes, Diagn
 }
 
 Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags) {
-  fs::path target(path);
-  fs::path temp = target;
-  // Unique per process and call, so concurrent writers never share a temp file.
-  static std::atomic<uint64_t> counter{0};
-  temp += fmt::format(".tmp.{}.{}", ::getpid(), counter++);
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
-      return failure("cannot write");
-    }
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::error_code ignore;
-      fs::remove(temp, ignore);
-      diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
-      return failure("cannot write");
-    }
-  }
-  std::error_code ec;
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}'", path));
+  if (Result<void, std::string> written = support::write_file_atomically(path, bytes); !written) {
+    diags.add(DiagId::io_cannot_write, {}, fmt::format("cannot write '{}': {}", path, written.error()));
     return failure("cannot write");
   }
   return {};

@@ -172,16 +172,10 @@ std::string without_unreachable_functions(const std::string& text, const std::st
 
 namespace {
 
-std::string_view trim_view(std::string_view s) {
-  size_t b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string_view::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t\r\n") + 1 - b);
-}
-
 // "static [const] TYPE NAME = INIT;": the '=' and the name, or npos when the
 // item is no such declaration (an array, a list, or no initialiser).
 size_t static_initializer(std::string_view item, std::string& name) {
-  std::string_view t = trim_view(item);
+  std::string_view t = trim(item);
   if (!t.starts_with("static") || t.size() < 7 || ident_char(t[6])) return std::string_view::npos;
   int depth = 0;
   for (size_t i = 0; i < item.size(); ++i) {

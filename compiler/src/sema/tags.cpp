@@ -2,17 +2,12 @@
 #include <charconv>
 
 #include "lower.h"
+#include "facet/support/text.h"
 
 namespace facet::sema {
 namespace {
 
 constexpr std::string_view kQueues[] = {"Background", "Geometry", "AlphaTest", "Transparent", "Overlay"};
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
 
 bool is_integer(std::string_view s) {
   int value = 0;

@@ -6,15 +6,10 @@
 #include <cmath>
 
 #include "parser.h"
+#include "facet/support/text.h"
 
 namespace facet::shaderlab {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r' || s.front() == '\n')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n')) s.remove_suffix(1);
-  return s;
-}
 
 bool is_attribute_name(std::string_view s) {
   if (s.empty() || !is_ident_start(s[0])) return false;

@@ -8,6 +8,7 @@
 #include <array>
 
 #include "parser.h"
+#include "facet/support/text.h"
 
 namespace facet::shaderlab {
 namespace {
@@ -63,12 +64,6 @@ bool is_command_keyword(std::string_view word) {
     if (iequals(k.word, word)) return true;
   }
   return contains_word(kLegacyKeywords, word) || contains_word(kStructureKeywords, word);
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
 }
 
 bool is_identifier(std::string_view s) {

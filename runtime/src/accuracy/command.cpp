@@ -2,30 +2,16 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <filesystem>
-#include <fstream>
 
 #include "facet/runtime/accuracy.h"
+#include "facet/support/atomic_file.h"
 
 namespace facet::runtime::accuracy {
 namespace {
 
-// Writes through a temporary file and a rename, so a failed run leaves nothing.
-bool write_atomically(const std::string& path, const std::string& text, std::ostream& err) {
-  std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text) || !out.flush()) {
-      err << fmt::format("facet bench accuracy: cannot write '{}'\n", path);
-      std::filesystem::remove(temp);
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    err << fmt::format("facet bench accuracy: cannot write '{}': {}\n", path, ec.message());
-    std::filesystem::remove(temp);
+bool write_report(const std::string& path, const std::string& text, std::ostream& err) {
+  if (Result<void, std::string> written = support::write_file_atomically(path, text); !written) {
+    err << fmt::format("facet bench accuracy: cannot write '{}': {}\n", path, written.error());
     return false;
   }
   return true;
@@ -69,7 +55,7 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
     for (const Diagnostic& d : diags.all()) err << "facet bench accuracy: " << d.message << "\n";
     return 1;
   }
-  if (!write_atomically(output, json ? study_json(*study) : study_html(*study), err)) return 1;
+  if (!write_report(output, json ? study_json(*study) : study_html(*study), err)) return 1;
   out << fmt::format("facet bench accuracy: {} rows on {} -> {}\n", study->rows.size(),
                      study->device.empty() ? "no GPU" : study->device, output);
   return 0;

@@ -5,15 +5,13 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "brdf_internal.h"
 #include "facet/markup.h"
 #include "facet/reference/color.h"
+#include "facet/support/atomic_file.h"
 
 namespace facet::brdf {
 namespace {
@@ -160,26 +158,8 @@ Result<std::string> to_png(const Figure& f) {
 }
 
 Result<void> write_file_whole(const std::string& path, const std::string& bytes) {
-  std::filesystem::path target(path);
-  std::filesystem::path temp = target;
-  temp += fmt::format(".partial-{}", ::getpid());
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return failure(fmt::format("{}: cannot write ({})", path, std::strerror(errno)));
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      return failure(fmt::format("{}: write failed", path));
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    return failure(fmt::format("{}: cannot write ({})", path, ec.message()));
+  if (Result<void, std::string> written = support::write_file_atomically(path, bytes); !written) {
+    return failure(fmt::format("{}: cannot write ({})", path, written.error()));
   }
   return {};
 }

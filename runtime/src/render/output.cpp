@@ -1,32 +1,20 @@
 // PNG and EXR files through image_io, written atomically, and the --explain listing.
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <filesystem>
 
 #include "facet/runtime/renderer.h"
+#include "facet/support/atomic_file.h"
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
 namespace {
 
-// The writer picks the format by extension, so the temporary file keeps it.
 template <typename Pixel>
 Result<void, RenderError> write_atomically(const std::string& path, const RenderedFrame& frame, const Pixel* pixels) {
-  std::filesystem::path target(path);
-  std::filesystem::path temp = target.parent_path() /
-                               fmt::format(".{}.tmp{}{}", target.stem().string(), getpid(), target.extension().string());
-  if (Result<void, std::string> written = write_image_file(temp.string(), frame.width, frame.height, pixels); !written) {
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
-    return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, written.error())});
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, ec.message())});
-  }
+  Result<void, std::string> written = support::replace_file_atomically(path, [&](const std::string& temporary) {
+    return write_image_file(temporary, frame.width, frame.height, pixels);
+  });
+  if (!written) return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, written.error())});
   return {};
 }
 

@@ -1,5 +1,5 @@
 // ASCII text helpers shared by every stage and the runtime: ShaderLab words,
-// HLSL semantics and device names compare and fold case the same way
+// HLSL semantics and device names compare, fold case and trim the same way
 // everywhere, whatever the C locale says.
 #pragma once
 
@@ -30,6 +30,15 @@ inline std::string lower(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = ascii_lower(c);
   return out;
+}
+
+constexpr bool is_ascii_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+
+// `s` without the ASCII white space (isspace's set in the C locale) at its ends.
+constexpr std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_ascii_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_ascii_space(s.back())) s.remove_suffix(1);
+  return s;
 }
 
 }  // namespace facet

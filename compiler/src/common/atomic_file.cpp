@@ -1,0 +1,75 @@
+#include "facet/support/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <system_error>
+
+namespace facet::support {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string error_text(int error) { return std::error_code(error, std::generic_category()).message(); }
+
+// A new empty file "<target>.tmp.<pid>.<8 random letters><extension>", or
+// an error. Like mkstemps, but with mode 0666 less the umask (mkstemps makes
+// 0600, and the temporary becomes the output); the process id tells whose
+// temporary a killed build left.
+Result<std::string, std::string> create_temporary(const fs::path& target) {
+  const std::string prefix = target.string() + ".tmp." + std::to_string(::getpid()) + ".";
+  constexpr std::string_view kLetters = "abcdefghijklmnopqrstuvwxyz0123456789";
+  std::random_device entropy;
+  int error = EEXIST;
+  for (int attempt = 0; attempt < 100 && error == EEXIST; ++attempt) {
+    std::string name = prefix;
+    for (int i = 0; i < 8; ++i) name += kLetters[entropy() % kLetters.size()];
+    name += target.extension().string();
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return name;
+    }
+    error = errno;
+  }
+  return unexpected(error_text(error));
+}
+
+}  // namespace
+
+Result<void, std::string> replace_file_atomically(
+    const std::string& target, const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary) {
+  Result<std::string, std::string> temporary = create_temporary(fs::path(target));
+  if (!temporary) return unexpected(temporary.error());
+  std::error_code ignored;
+  if (Result<void, std::string> written = write_temporary(*temporary); !written) {
+    fs::remove(*temporary, ignored);
+    return written;
+  }
+  // Atomic: readers see the old file or the new one. A folder (or anything
+  // else that cannot be replaced) in the target's place makes it fail.
+  std::error_code ec;
+  fs::rename(*temporary, target, ec);
+  if (ec) {
+    fs::remove(*temporary, ignored);
+    return unexpected(ec.message());
+  }
+  return {};
+}
+
+Result<void, std::string> write_file_atomically(const std::string& target, std::string_view bytes) {
+  return replace_file_atomically(target, [&](const std::string& temporary) -> Result<void, std::string> {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) return unexpected(error_text(errno));
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.close();
+    if (!out) return unexpected(std::string("the write failed"));
+    return {};
+  });
+}
+
+}  // namespace facet::support
