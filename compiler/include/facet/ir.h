@@ -172,6 +172,7 @@ struct SurfaceProgram {
 struct SubShader {
   std::vector<Tag> tags;
   int lod = 0;  // 0 when not given
+  int queue = 2000;  // the render queue of its Queue tag (sema resolves it); Geometry without one
   RenderState state;
   std::vector<Pass> passes;  // in file order
   std::vector<SurfaceProgram> surface_programs;  // in file order; Unity allows several

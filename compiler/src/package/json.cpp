@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/package.h"
+#include "facet/support/state_json.h"
 
 namespace facet::package {
 namespace {
@@ -55,84 +56,6 @@ Json stage_mask(StageMask mask) {
   for (int i = 0; i < kStageCount; ++i) {
     if (mask & stage_bit(Stage(i))) out.push_back(stage_name(Stage(i)));
   }
-  return out;
-}
-
-Json tags(const std::vector<ir::Tag>& tags) {
-  Json out = Json::array();
-  for (const ir::Tag& t : tags) out.push_back(Json::array({t.key, t.value}));
-  return out;
-}
-
-// A literal prints as its text, a property reference as {"property": name}.
-Json value(const ir::StateValue& v) {
-  if (v.is_property()) return Json{{"property", v.property}};
-  return v.literal;
-}
-
-void put(Json& out, const char* key, const std::optional<ir::StateValue>& v) {
-  if (v) out[key] = value(*v);
-}
-
-Json stencil(const ir::StencilState& s) {
-  Json out = Json::object();
-  put(out, "ref", s.ref);
-  put(out, "read_mask", s.read_mask);
-  put(out, "write_mask", s.write_mask);
-  put(out, "comp", s.comp);
-  put(out, "pass", s.pass);
-  put(out, "fail", s.fail);
-  put(out, "zfail", s.zfail);
-  put(out, "comp_back", s.comp_back);
-  put(out, "pass_back", s.pass_back);
-  put(out, "fail_back", s.fail_back);
-  put(out, "zfail_back", s.zfail_back);
-  put(out, "comp_front", s.comp_front);
-  put(out, "pass_front", s.pass_front);
-  put(out, "fail_front", s.fail_front);
-  put(out, "zfail_front", s.zfail_front);
-  return out;
-}
-
-Json render_targets(const ir::RenderState& s, Json out) {
-  if (!s.blend.empty()) {
-    Json& list = out["blend"] = Json::array();
-    for (const ir::BlendState& b : s.blend) {
-      Json j{{"target", b.render_target}, {"off", b.off}, {"src", value(b.src)}, {"dst", value(b.dst)}};
-      put(j, "src_alpha", b.src_alpha);
-      put(j, "dst_alpha", b.dst_alpha);
-      list.push_back(std::move(j));
-    }
-  }
-  if (!s.blend_op.empty()) {
-    Json& list = out["blend_op"] = Json::array();
-    for (const ir::BlendOpState& b : s.blend_op) {
-      Json j{{"target", b.render_target}, {"color_op", value(b.color_op)}};
-      put(j, "alpha_op", b.alpha_op);
-      list.push_back(std::move(j));
-    }
-  }
-  if (!s.color_mask.empty()) {
-    Json& list = out["color_mask"] = Json::array();
-    for (const ir::ColorMaskState& c : s.color_mask) {
-      list.push_back(Json{{"target", c.render_target}, {"mask", value(c.mask)}});
-    }
-  }
-  return out;
-}
-
-Json render_state(const ir::RenderState& s) {
-  Json out = Json::object();
-  put(out, "cull", s.cull);
-  put(out, "ztest", s.ztest);
-  put(out, "zwrite", s.zwrite);
-  put(out, "alpha_to_mask", s.alpha_to_mask);
-  put(out, "zclip", s.zclip);
-  put(out, "conservative", s.conservative);
-  put(out, "offset_factor", s.offset_factor);
-  put(out, "offset_units", s.offset_units);
-  out = render_targets(s, std::move(out));
-  if (s.stencil) out["stencil"] = stencil(*s.stencil);
   return out;
 }
 
@@ -246,8 +169,8 @@ Json pass(const PackagePass& p) {
   Json list = Json::array();
   for (const PackageVariant& v : p.variants) list.push_back(variant(v));
   return Json{{"name", p.name},
-              {"tags", tags(p.tags)},
-              {"state", render_state(p.state)},
+              {"tags", tags_json(p.tags)},
+              {"state", render_state_json(p.state)},
               {"keywords", keyword_space(p.keywords)},
               {"variants", std::move(list)}};
 }
@@ -283,7 +206,7 @@ std::string package_to_json(const Package& package) {
                            {"lod", package.lod},
                            {"fallback", package.fallback},
                            {"custom_editor", package.custom_editor},
-                           {"tags", tags(package.subshader_tags)},
+                           {"tags", tags_json(package.subshader_tags)},
                            {"build", build_record(package.build)}}},
            {"properties", std::move(props)},
            {"passes", std::move(passes)},

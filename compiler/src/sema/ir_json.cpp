@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/support/json_print.h"
+#include "facet/support/state_json.h"
 #include "facet/sema.h"
 
 namespace facet::sema {
@@ -28,10 +29,6 @@ Json span(SourceSpan s) {
   return std::to_string(s.begin) + "-" + std::to_string(s.end);
 }
 
-Json value(const ir::StateValue& v) { return v.is_property() ? "[" + v.property + "]" : v.literal; }
-
-Json optional_value(const std::optional<ir::StateValue>& v) { return v ? value(*v) : Json(); }
-
 Json property(const ir::Property& p) {
   Json j;
   j["name"] = p.name;
@@ -49,76 +46,6 @@ Json property(const ir::Property& p) {
     j["default"] = d;
   }
   j["span"] = span(p.span);
-  return j;
-}
-
-Json tags(const std::vector<ir::Tag>& tags) {
-  Json j = Json::array();
-  for (const ir::Tag& t : tags) j.push_back(Json::array({t.key, t.value}));
-  return j;
-}
-
-void put(Json& j, const char* key, const std::optional<ir::StateValue>& v) {
-  if (v) j[key] = value(*v);
-}
-
-Json stencil(const ir::StencilState& s) {
-  Json j = Json::object();
-  put(j, "Ref", s.ref);
-  put(j, "ReadMask", s.read_mask);
-  put(j, "WriteMask", s.write_mask);
-  put(j, "Comp", s.comp);
-  put(j, "Pass", s.pass);
-  put(j, "Fail", s.fail);
-  put(j, "ZFail", s.zfail);
-  put(j, "CompBack", s.comp_back);
-  put(j, "PassBack", s.pass_back);
-  put(j, "FailBack", s.fail_back);
-  put(j, "ZFailBack", s.zfail_back);
-  put(j, "CompFront", s.comp_front);
-  put(j, "PassFront", s.pass_front);
-  put(j, "FailFront", s.fail_front);
-  put(j, "ZFailFront", s.zfail_front);
-  return j;
-}
-
-Json state(const ir::RenderState& s) {
-  Json j = Json::object();
-  put(j, "Cull", s.cull);
-  put(j, "ZTest", s.ztest);
-  put(j, "ZWrite", s.zwrite);
-  put(j, "AlphaToMask", s.alpha_to_mask);
-  put(j, "ZClip", s.zclip);
-  put(j, "Conservative", s.conservative);
-  if (s.offset_factor || s.offset_units) j["Offset"] = {optional_value(s.offset_factor), optional_value(s.offset_units)};
-  if (!s.blend.empty()) {
-    Json& list = j["Blend"] = Json::array();
-    for (const ir::BlendState& b : s.blend) {
-      Json e = {{"rt", b.render_target}};
-      if (b.off) {
-        e["off"] = true;
-      } else {
-        e["src"] = value(b.src);
-        e["dst"] = value(b.dst);
-        if (b.src_alpha) e["src_alpha"] = value(*b.src_alpha);
-        if (b.dst_alpha) e["dst_alpha"] = value(*b.dst_alpha);
-      }
-      list.push_back(e);
-    }
-  }
-  if (!s.blend_op.empty()) {
-    Json& list = j["BlendOp"] = Json::array();
-    for (const ir::BlendOpState& b : s.blend_op) {
-      Json e = {{"rt", b.render_target}, {"op", value(b.color_op)}};
-      if (b.alpha_op) e["alpha_op"] = value(*b.alpha_op);
-      list.push_back(e);
-    }
-  }
-  if (!s.color_mask.empty()) {
-    Json& list = j["ColorMask"] = Json::array();
-    for (const ir::ColorMaskState& m : s.color_mask) list.push_back({{"rt", m.render_target}, {"mask", value(m.mask)}});
-  }
-  if (s.stencil) j["Stencil"] = stencil(*s.stencil);
   return j;
 }
 
@@ -154,8 +81,8 @@ Json pass(const ir::Pass& p) {
   j["name"] = p.name;
   if (p.kind == ir::PassKind::use_pass) j["use_pass"] = p.use_pass;
   if (p.kind == ir::PassKind::grab_pass) j["grab_texture"] = p.grab_texture;
-  j["tags"] = tags(p.tags);
-  j["state"] = state(p.state);
+  j["tags"] = tags_json(p.tags);
+  j["state"] = render_state_json(p.state);
   if (p.program) j["program"] = program(*p.program);
   j["span"] = span(p.span);
   return j;
@@ -163,9 +90,10 @@ Json pass(const ir::Pass& p) {
 
 Json subshader(const ir::SubShader& s) {
   Json j;
-  j["tags"] = tags(s.tags);
+  j["tags"] = tags_json(s.tags);
   j["lod"] = s.lod;
-  j["state"] = state(s.state);
+  j["queue"] = s.queue;
+  j["state"] = render_state_json(s.state);
   if (!s.surface_programs.empty()) {
     Json surface = Json::array();
     for (const ir::SurfaceProgram& sp : s.surface_programs) {

@@ -112,6 +112,10 @@ ir::SubShader lower_subshader(const ast::SubShader& sub, const Scope& scope, Con
   check_tags(sub.tags, ctx);
   out.tags = inherit_tags(scope.tags, lower_tags(sub.tags));
   out.lod = sub.lod.value_or(scope.lod.value_or(0));
+  for (const ir::Tag& tag : out.tags) {
+    if (!iequals(tag.key, "Queue")) continue;
+    if (std::optional<int> queue = queue_number(tag.value)) out.queue = *queue;
+  }
   out.state = merge_state(scope.state, lower_state(sub.state, ctx));
   out.span = sub.span;
   auto includes = with_includes(scope.includes, sub.includes);

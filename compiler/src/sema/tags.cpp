@@ -7,30 +7,57 @@
 namespace facet::sema {
 namespace {
 
-constexpr std::string_view kQueues[] = {"Background", "Geometry", "AlphaTest", "Transparent", "Overlay"};
+struct NamedQueue {
+  std::string_view name;
+  int number;
+};
+constexpr NamedQueue kQueues[] = {
+    {"Background", 1000}, {"Geometry", 2000}, {"AlphaTest", 2450}, {"Transparent", 3000}, {"Overlay", 4000}};
 
-bool is_integer(std::string_view s) {
+std::optional<int> integer(std::string_view s) {
   int value = 0;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  return !s.empty() && ec == std::errc() && ptr == s.data() + s.size();
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
+  return value;
 }
 
-// "Geometry", "Geometry+1", "Transparent-100", "2450"; returns the queue's
-// name part when that is what is wrong, "" when the value is fine.
-std::optional<std::string> queue_problem(std::string_view value) {
+std::vector<std::string_view> queue_names() {
+  std::vector<std::string_view> names;
+  for (const NamedQueue& q : kQueues) names.push_back(q.name);
+  return names;
+}
+
+// The part of a Queue value that is wrong, for the message and its
+// did-you-mean: the name, or the whole value when the offset is.
+std::string queue_problem(std::string_view value) {
   value = trim(value);
-  if (is_integer(value)) return std::nullopt;
+  size_t sign = value.find_first_of("+-");
+  if (sign == std::string_view::npos) return std::string(value);
+  std::string_view name = trim(value.substr(0, sign));
+  return std::string(queue_number(name) ? value : name);
+}
+
+}  // namespace
+
+std::optional<int> queue_number(std::string_view value) {
+  value = trim(value);
+  if (std::optional<int> number = integer(value)) return number;
   size_t sign = value.find_first_of("+-");
   std::string_view name = trim(value.substr(0, sign));
+  int offset = 0;
   if (sign != std::string_view::npos) {
-    std::string_view offset = trim(value.substr(sign + 1));
-    if (!is_integer(offset) || offset[0] == '-' || offset[0] == '+') return std::string(value);
+    std::string_view digits = trim(value.substr(sign + 1));
+    std::optional<int> magnitude = digits.empty() || digits[0] == '-' || digits[0] == '+' ? std::nullopt : integer(digits);
+    if (!magnitude) return std::nullopt;
+    offset = value[sign] == '-' ? -*magnitude : *magnitude;
   }
-  for (std::string_view q : kQueues) {
-    if (iequals(q, name)) return std::nullopt;
+  for (const NamedQueue& q : kQueues) {
+    if (iequals(q.name, name)) return q.number + offset;
   }
-  return std::string(name);
+  return std::nullopt;
 }
+
+namespace {
 
 std::string escape(std::string_view s) {
   std::string out;
@@ -64,11 +91,13 @@ std::vector<ir::Tag> inherit_tags(const std::vector<ir::Tag>& outer, const std::
 void check_tags(const std::vector<ast::Tag>& tags, Context& ctx) {
   for (const ast::Tag& t : tags) {
     if (!iequals(t.key, "Queue")) continue;
-    auto problem = queue_problem(t.value);
-    if (!problem) continue;
+    if (queue_number(t.value)) continue;
+    const std::vector<std::string_view> names = queue_names();
     Diagnostic& d = ctx.error(DiagId::sema_bad_queue, t.value_span, "unknown render queue '" + t.value + "'");
-    if (auto best = suggest(*problem, kQueues)) d.note(t.value_span, "did you mean '" + std::string(*best) + "'?");
-    d.note({}, "a queue is one of " + join(kQueues) + ", optionally with an offset such as 'Geometry+1', or a number");
+    if (auto best = suggest(queue_problem(t.value), names)) {
+      d.note(t.value_span, "did you mean '" + std::string(*best) + "'?");
+    }
+    d.note({}, "a queue is one of " + join(names) + ", optionally with an offset such as 'Geometry+1', or a number");
   }
 }
 

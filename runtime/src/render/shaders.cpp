@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <charconv>
 
 namespace facet::runtime {
 namespace {
@@ -15,30 +14,6 @@ struct Timer {
 };
 
 }  // namespace
-
-std::optional<int> parse_queue(const std::string& tag) {
-  static const std::pair<const char*, int> names[] = {
-      {"Background", 1000}, {"Geometry", 2000}, {"AlphaTest", 2450}, {"Transparent", 3000}, {"Overlay", 4000}};
-  std::string_view rest = tag;
-  int base = 0;
-  bool named = false;
-  for (auto [name, value] : names) {
-    std::string_view n = name;
-    if (rest.size() >= n.size() && std::equal(n.begin(), n.end(), rest.begin(),
-                                              [](char a, char b) { return std::tolower(a) == std::tolower(b); })) {
-      base = value;
-      rest.remove_prefix(n.size());
-      named = true;
-      break;
-    }
-  }
-  if (named && rest.empty()) return base;
-  int offset = 0;
-  if (!rest.empty() && rest[0] == '+') rest.remove_prefix(1);
-  auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), offset);
-  if (ec != std::errc() || end != rest.data() + rest.size()) return std::nullopt;
-  return base + offset;
-}
 
 Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   if (auto it = shaders_.find(path); it != shaders_.end()) return it->second.get();
@@ -53,12 +28,7 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   if (!passes) return unexpected(render_text(diags, asset->sources));
   asset->passes = std::move(*passes);
   if (!asset->passes.empty()) {
-    const ir::SubShader& sub = asset->shader.subshaders[asset->passes[0].subshader];
-    for (const ir::Tag& tag : sub.tags) {
-      if (tag.key == "Queue") {
-        if (std::optional<int> q = parse_queue(tag.value)) asset->queue = *q;
-      }
-    }
+    asset->queue = asset->shader.subshaders[asset->passes[0].subshader].queue;
   }
   ShaderAsset* raw = asset.get();
   shaders_[path] = std::move(asset);

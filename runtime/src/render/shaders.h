@@ -30,7 +30,6 @@ struct ShaderAsset {
 };
 
 // "Geometry+1" -> 2001, "Transparent" -> 3000, "2450" -> 2450; nullopt if unreadable.
-std::optional<int> parse_queue(const std::string& tag);
 
 class ShaderLibrary {
  public:

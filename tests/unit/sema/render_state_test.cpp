@@ -39,7 +39,7 @@ std::string in_pass(std::string_view commands) {
   return "Shader \"T\" { SubShader { Pass {\n" + std::string(commands) + "\n} } }";
 }
 
-// The pass's state as compact JSON, as ir_to_json writes it.
+// The pass's state as compact JSON, as ir_to_json (and the package dump) write it.
 std::string pass_state(const Analyzed& a) {
   auto j = nlohmann::ordered_json::parse(ir_to_json(*a.ir));
   return j["subshaders"][0]["passes"][0]["state"].dump();
@@ -63,48 +63,48 @@ TEST_P(SemaRenderStateTest, Canonicalises) {
 INSTANTIATE_TEST_SUITE_P(
     Values, SemaRenderStateTest,
     testing::Values(
-        CanonicalCase{"cull", "cull back", R"({"Cull":"Back"})"},
-        CanonicalCase{"cull_off", "CULL OFF", R"({"Cull":"Off"})"},
-        CanonicalCase{"ztest", "ZTest lequal", R"({"ZTest":"LEqual"})"},
-        CanonicalCase{"ztest_gequal", "ZTest GEQUAL", R"({"ZTest":"GEqual"})"},
-        CanonicalCase{"ztest_prop", "ZTest [unity_GUIZTestMode]", R"({"ZTest":"[unity_GUIZTestMode]"})"},
-        CanonicalCase{"zwrite", "zwrite on", R"({"ZWrite":"On"})"},
-        CanonicalCase{"alpha_to_mask", "AlphaToMask off", R"({"AlphaToMask":"Off"})"},
-        CanonicalCase{"zclip", "ZClip false", R"({"ZClip":"False"})"},
+        CanonicalCase{"cull", "cull back", R"({"cull":"Back"})"},
+        CanonicalCase{"cull_off", "CULL OFF", R"({"cull":"Off"})"},
+        CanonicalCase{"ztest", "ZTest lequal", R"({"ztest":"LEqual"})"},
+        CanonicalCase{"ztest_gequal", "ZTest GEQUAL", R"({"ztest":"GEqual"})"},
+        CanonicalCase{"ztest_prop", "ZTest [unity_GUIZTestMode]", R"({"ztest":{"property":"unity_GUIZTestMode"}})"},
+        CanonicalCase{"zwrite", "zwrite on", R"({"zwrite":"On"})"},
+        CanonicalCase{"alpha_to_mask", "AlphaToMask off", R"({"alpha_to_mask":"Off"})"},
+        CanonicalCase{"zclip", "ZClip false", R"({"zclip":"False"})"},
         // Unity accepts either pair of words for every boolean command.
-        CanonicalCase{"zclip_on", "ZClip On", R"({"ZClip":"True"})"},
-        CanonicalCase{"zwrite_true", "ZWrite True", R"({"ZWrite":"On"})"},
-        CanonicalCase{"alpha_to_mask_true", "AlphaToMask True", R"({"AlphaToMask":"On"})"},
-        CanonicalCase{"conservative_off", "Conservative Off", R"({"Conservative":"False"})"},
+        CanonicalCase{"zclip_on", "ZClip On", R"({"zclip":"True"})"},
+        CanonicalCase{"zwrite_true", "ZWrite True", R"({"zwrite":"On"})"},
+        CanonicalCase{"alpha_to_mask_true", "AlphaToMask True", R"({"alpha_to_mask":"On"})"},
+        CanonicalCase{"conservative_off", "Conservative Off", R"({"conservative":"False"})"},
         // "ZTest Off" is Unity's alias of Always.
-        CanonicalCase{"ztest_off", "ZTest Off", R"({"ZTest":"Always"})"},
+        CanonicalCase{"ztest_off", "ZTest Off", R"({"ztest":"Always"})"},
         // "ZTest On" (old shaders): depth testing as by default.
-        CanonicalCase{"ztest_on", "ZTest On", R"({"ZTest":"LEqual"})"},
-        CanonicalCase{"conservative", "Conservative TRUE", R"({"Conservative":"True"})"},
-        CanonicalCase{"offset", "Offset -1, -1", R"({"Offset":["-1","-1"]})"},
-        CanonicalCase{"offset_prop", "Offset [_F], 0.5", R"({"Offset":["[_F]","0.5"]})"},
+        CanonicalCase{"ztest_on", "ZTest On", R"({"ztest":"LEqual"})"},
+        CanonicalCase{"conservative", "Conservative TRUE", R"({"conservative":"True"})"},
+        CanonicalCase{"offset", "Offset -1, -1", R"({"offset_factor":"-1","offset_units":"-1"})"},
+        CanonicalCase{"offset_prop", "Offset [_F], 0.5", R"({"offset_factor":{"property":"_F"},"offset_units":"0.5"})"},
         CanonicalCase{"blend", "Blend srcalpha oneminussrcalpha",
-                      R"({"Blend":[{"rt":-1,"src":"SrcAlpha","dst":"OneMinusSrcAlpha"}]})"},
+                      R"({"blend":[{"target":-1,"off":false,"src":"SrcAlpha","dst":"OneMinusSrcAlpha"}]})"},
         CanonicalCase{"blend_props", "Blend [_SrcBlend] [_DstBlend]",
-                      R"({"Blend":[{"rt":-1,"src":"[_SrcBlend]","dst":"[_DstBlend]"}]})"},
+                      R"({"blend":[{"target":-1,"off":false,"src":{"property":"_SrcBlend"},"dst":{"property":"_DstBlend"}}]})"},
         CanonicalCase{"blend_separate", "Blend One One, zero oneminusdstcolor",
-                      R"({"Blend":[{"rt":-1,"src":"One","dst":"One","src_alpha":"Zero","dst_alpha":"OneMinusDstColor"}]})"},
-        CanonicalCase{"blend_off", "Blend off", R"({"Blend":[{"rt":-1,"off":true}]})"},
+                      R"({"blend":[{"target":-1,"off":false,"src":"One","dst":"One","src_alpha":"Zero","dst_alpha":"OneMinusDstColor"}]})"},
+        CanonicalCase{"blend_off", "Blend off", R"({"blend":[{"target":-1,"off":true,"src":"","dst":""}]})"},
         CanonicalCase{"blend_per_rt", "Blend One One\nBlend 2 srcalphasaturate Zero",
-                      R"({"Blend":[{"rt":-1,"src":"One","dst":"One"},{"rt":2,"src":"SrcAlphaSaturate","dst":"Zero"}]})"},
+                      R"({"blend":[{"target":-1,"off":false,"src":"One","dst":"One"},{"target":2,"off":false,"src":"SrcAlphaSaturate","dst":"Zero"}]})"},
         CanonicalCase{"blend_all_replaces_rt", "Blend 2 One Zero\nBlend One One",
-                      R"({"Blend":[{"rt":-1,"src":"One","dst":"One"}]})"},
-        CanonicalCase{"blend_op", "BlendOp revsub, MAX", R"({"BlendOp":[{"rt":-1,"op":"RevSub","alpha_op":"Max"}]})"},
-        CanonicalCase{"blend_op_logical", "BlendOp 1 logicalxor", R"({"BlendOp":[{"rt":1,"op":"LogicalXor"}]})"},
-        CanonicalCase{"blend_op_advanced", "BlendOp hslluminosity", R"({"BlendOp":[{"rt":-1,"op":"HSLLuminosity"}]})"},
-        CanonicalCase{"color_mask", "ColorMask rgb", R"({"ColorMask":[{"rt":-1,"mask":"RGB"}]})"},
-        CanonicalCase{"color_mask_order", "ColorMask AR", R"({"ColorMask":[{"rt":-1,"mask":"RA"}]})"},
-        CanonicalCase{"color_mask_zero", "ColorMask 0 1", R"({"ColorMask":[{"rt":1,"mask":"0"}]})"},
-        CanonicalCase{"color_mask_prop", "ColorMask [_Mask]", R"({"ColorMask":[{"rt":-1,"mask":"[_Mask]"}]})"},
+                      R"({"blend":[{"target":-1,"off":false,"src":"One","dst":"One"}]})"},
+        CanonicalCase{"blend_op", "BlendOp revsub, MAX", R"({"blend_op":[{"target":-1,"color_op":"RevSub","alpha_op":"Max"}]})"},
+        CanonicalCase{"blend_op_logical", "BlendOp 1 logicalxor", R"({"blend_op":[{"target":1,"color_op":"LogicalXor"}]})"},
+        CanonicalCase{"blend_op_advanced", "BlendOp hslluminosity", R"({"blend_op":[{"target":-1,"color_op":"HSLLuminosity"}]})"},
+        CanonicalCase{"color_mask", "ColorMask rgb", R"({"color_mask":[{"target":-1,"mask":"RGB"}]})"},
+        CanonicalCase{"color_mask_order", "ColorMask AR", R"({"color_mask":[{"target":-1,"mask":"RA"}]})"},
+        CanonicalCase{"color_mask_zero", "ColorMask 0 1", R"({"color_mask":[{"target":1,"mask":"0"}]})"},
+        CanonicalCase{"color_mask_prop", "ColorMask [_Mask]", R"({"color_mask":[{"target":-1,"mask":{"property":"_Mask"}}]})"},
         CanonicalCase{"stencil", "Stencil { ref 2 comp lequal pass incrsat zfailback decrwrap compfront [_C] }",
-                      R"({"Stencil":{"Ref":"2","Comp":"LEqual","Pass":"IncrSat","ZFailBack":"DecrWrap","CompFront":"[_C]"}})"},
+                      R"({"stencil":{"ref":"2","comp":"LEqual","pass":"IncrSat","zfail_back":"DecrWrap","comp_front":{"property":"_C"}}})"},
         CanonicalCase{"stencil_masks", "Stencil { Ref [_Ref] ReadMask 255 WriteMask 0 }",
-                      R"({"Stencil":{"Ref":"[_Ref]","ReadMask":"255","WriteMask":"0"}})"}),
+                      R"({"stencil":{"ref":{"property":"_Ref"},"read_mask":"255","write_mask":"0"}})"}),
     [](const testing::TestParamInfo<CanonicalCase>& info) { return std::string(info.param.name); });
 
 struct ErrorCase {
@@ -240,7 +240,7 @@ TEST(SemaRenderStateTest, DuplicateCommandWarnsAndLastWins) {
 TEST(SemaRenderStateTest, StencilValueWiderThanEightBitsWarnsAndKeepsItsLowByte) {
   auto a = analyze_text(in_pass("Stencil { Ref 901 WriteMask 256 Comp Always }"));
   ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
-  EXPECT_EQ(pass_state(*a), R"({"Stencil":{"Ref":"133","WriteMask":"0","Comp":"Always"}})");
+  EXPECT_EQ(pass_state(*a), R"({"stencil":{"ref":"133","write_mask":"0","comp":"Always"}})");
   ASSERT_EQ(a->diags.warning_count(), 2u);
   const Diagnostic* d = a->find(DiagId::sema_stencil_value_truncated);
   ASSERT_NE(d, nullptr);

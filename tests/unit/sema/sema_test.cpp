@@ -180,6 +180,7 @@ INSTANTIATE_TEST_SUITE_P(
 struct QueueCase {
   const char* value;
   bool valid;
+  int number = 0;  // the queue sema resolves, for a valid value
 };
 
 class SemaQueueTest : public testing::TestWithParam<QueueCase> {};
@@ -189,18 +190,30 @@ TEST_P(SemaQueueTest, Validates) {
   EXPECT_EQ(a->ir.has_value(), GetParam().valid) << render_text(a->diags, a->sources);
   if (!GetParam().valid) {
     EXPECT_NE(a->find(DiagId::sema_bad_queue), nullptr);
+  } else if (a->ir) {
+    EXPECT_EQ(a->ir->subshaders.at(0).queue, GetParam().number);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Queues, SemaQueueTest,
-                         testing::Values(QueueCase{"Background", true}, QueueCase{"Geometry", true},
-                                         QueueCase{"AlphaTest", true}, QueueCase{"Transparent", true},
-                                         QueueCase{"Overlay", true}, QueueCase{"Geometry+1", true},
-                                         QueueCase{"Transparent-100", true}, QueueCase{"geometry-99", true},
-                                         QueueCase{"Geometry + 200", true}, QueueCase{"2450", true},
+                         testing::Values(QueueCase{"Background", true, 1000}, QueueCase{"Geometry", true, 2000},
+                                         QueueCase{"AlphaTest", true, 2450}, QueueCase{"Transparent", true, 3000},
+                                         QueueCase{"Overlay", true, 4000}, QueueCase{"Geometry+1", true, 2001},
+                                         QueueCase{"Transparent-100", true, 2900}, QueueCase{"geometry-99", true, 1901},
+                                         QueueCase{"Geometry + 200", true, 2200}, QueueCase{" 2450 ", true, 2450},
                                          QueueCase{"Geomtry", false}, QueueCase{"Geometry+x", false},
                                          QueueCase{"Geometry+", false}, QueueCase{"Front", false},
                                          QueueCase{"Geometry+-1", false}, QueueCase{"", false}));
+
+TEST(SemaTagsTest, TheQueueIsGeometryWithoutATagAndInheritedFromACategory) {
+  auto a = analyze_text(R"(Shader "T" { SubShader { Pass { } }
+    Category { Tags { "Queue"="Overlay+5" } SubShader { Pass { } } SubShader { Tags { "Queue"="Background" } Pass { } } } })");
+  ASSERT_TRUE(a->ir) << render_text(a->diags, a->sources);
+  ASSERT_EQ(a->ir->subshaders.size(), 3u);
+  EXPECT_EQ(a->ir->subshaders[0].queue, 2000);
+  EXPECT_EQ(a->ir->subshaders[1].queue, 4005);
+  EXPECT_EQ(a->ir->subshaders[2].queue, 1000);
+}
 
 TEST(SemaTagsTest, BadQueueSuggests) {
   auto a = analyze_text("Shader \"T\" { SubShader { Tags { \"Queue\"=\"Transparnt+1\" } } }");
