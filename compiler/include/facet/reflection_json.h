@@ -13,14 +13,15 @@
 //    "spec_constants": [{"name", "id", "type", "default_value"}],
 //    "property_bindings": [{"property", "role", "block", "member"}]}
 //
-// Keys are written in alphabetical order (nlohmann::json's object order), so
-// the same reflection always gives the same bytes; arrays keep the order of
-// StageReflection (which is itself sorted, see reflection.h).
+// Through nlohmann::json, keys are in alphabetical order (its object order);
+// through reflection_to_ordered_json (the package dump), in the order above.
+// Either way the same reflection gives the same bytes, and arrays keep the
+// order of StageReflection (which is itself sorted, see reflection.h).
 // kind: "combined_image_sampler" "separate_image" "separate_sampler"
 //       "storage_image" "storage_buffer" "uniform_texel_buffer".
 #pragma once
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <string_view>
@@ -35,6 +36,9 @@ namespace facet {
 // reflection_from_json() where exceptions must not escape.
 void to_json(nlohmann::json& j, const StageReflection& reflection);
 void from_json(const nlohmann::json& j, StageReflection& reflection);
+
+// The same object with its keys in the order above.
+nlohmann::ordered_json reflection_to_ordered_json(const StageReflection& reflection);
 
 // Non-throwing reading: Failure::reason says what is wrong.
 Result<StageReflection> reflection_from_json(const nlohmann::json& j);

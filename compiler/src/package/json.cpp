@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "facet/package.h"
+#include "facet/reflection_json.h"
 #include "facet/support/state_json.h"
 
 namespace facet::package {
@@ -35,18 +36,6 @@ std::string_view directive_text(variants::KeywordDirective d) {
     case variants::KeywordDirective::multi_compile: return "multi_compile";
     case variants::KeywordDirective::shader_feature: return "shader_feature";
     case variants::KeywordDirective::dynamic_branch: return "dynamic_branch";
-  }
-  return "unknown";
-}
-
-std::string_view resource_kind_name(ResourceKind k) {
-  switch (k) {
-    case ResourceKind::combined_image_sampler: return "combined_image_sampler";
-    case ResourceKind::separate_image: return "separate_image";
-    case ResourceKind::separate_sampler: return "separate_sampler";
-    case ResourceKind::storage_image: return "storage_image";
-    case ResourceKind::storage_buffer: return "storage_buffer";
-    case ResourceKind::uniform_texel_buffer: return "uniform_texel_buffer";
   }
   return "unknown";
 }
@@ -87,72 +76,10 @@ Json keyword_space(const variants::KeywordSpace& space) {
               {"skip_variants", space.skip_variants}};
 }
 
-Json variables(const std::vector<StageVariable>& vars) {
-  Json out = Json::array();
-  for (const StageVariable& v : vars) {
-    out.push_back(Json{{"name", v.name},
-                       {"semantic", v.semantic},
-                       {"location", v.location},
-                       {"type", v.type},
-                       {"array_size", v.array_size}});
-  }
-  return out;
-}
-
-Json members(const std::vector<BlockMember>& list) {
-  Json out = Json::array();
-  for (const BlockMember& m : list) {
-    out.push_back(Json{{"name", m.name},
-                       {"type", m.type},
-                       {"offset", m.offset},
-                       {"size", m.size},
-                       {"array_dims", m.array_dims},
-                       {"array_stride", m.array_stride},
-                       {"matrix_stride", m.matrix_stride},
-                       {"row_major", m.row_major},
-                       {"members", members(m.members)}});
-  }
-  return out;
-}
-
-Json reflection(const StageReflection& r) {
-  Json blocks = Json::array();
-  for (const UniformBlock& b : r.uniform_blocks) {
-    blocks.push_back(Json{{"name", b.name},
-                          {"set", b.set},
-                          {"binding", b.binding},
-                          {"size", b.size},
-                          {"push_constant", b.push_constant},
-                          {"members", members(b.members)}});
-  }
-  Json resources = Json::array();
-  for (const ResourceBinding& res : r.resources) {
-    resources.push_back(Json{{"name", res.name},
-                             {"kind", resource_kind_name(res.kind)},
-                             {"dim", res.dim},
-                             {"arrayed", res.arrayed},
-                             {"set", res.set},
-                             {"binding", res.binding},
-                             {"array_size", res.array_size}});
-  }
-  Json specs = Json::array();
-  for (const SpecConstant& c : r.spec_constants) {
-    specs.push_back(Json{{"name", c.name}, {"id", c.id}, {"type", c.type}, {"default_value", c.default_value}});
-  }
-  Json bindings = Json::array();
-  for (const PropertyBinding& b : r.property_bindings) {
-    bindings.push_back(Json{{"property", b.property}, {"role", b.role}, {"block", b.block}, {"member", b.member}});
-  }
-  return Json{{"stage", stage_name(r.stage)},         {"entry_point", r.entry_point},
-              {"inputs", variables(r.inputs)},       {"outputs", variables(r.outputs)},
-              {"uniform_blocks", std::move(blocks)}, {"resources", std::move(resources)},
-              {"spec_constants", std::move(specs)},  {"property_bindings", std::move(bindings)}};
-}
-
 Json variant(const PackageVariant& v) {
   Json stages = Json::array();
   for (const PackageStage& s : v.stages) {
-    stages.push_back(Json{{"stage", stage_name(s.stage)}, {"blob", s.blob}, {"reflection", reflection(s.reflection)}});
+    stages.push_back(Json{{"stage", stage_name(s.stage)}, {"blob", s.blob}, {"reflection", reflection_to_ordered_json(s.reflection)}});
   }
   Json key = Json::array();
   for (uint32_t c : v.key.choice) {

@@ -9,6 +9,7 @@ namespace facet {
 namespace {
 
 using nlohmann::json;
+using ordered = nlohmann::ordered_json;
 
 constexpr std::array<std::pair<ResourceKind, std::string_view>, 6> kKinds = {{
     {ResourceKind::combined_image_sampler, "combined_image_sampler"},
@@ -26,7 +27,7 @@ ResourceKind parse_kind(const std::string& name) {
   throw json::other_error::create(501, "unknown resource kind '" + name + "'", nullptr);
 }
 
-json variable_json(const StageVariable& v) {
+ordered variable_json(const StageVariable& v) {
   return {{"name", v.name}, {"semantic", v.semantic}, {"location", v.location}, {"type", v.type},
           {"array_size", v.array_size}};
 }
@@ -36,8 +37,8 @@ StageVariable variable_from(const json& j) {
           j.at("type").get<std::string>(), j.at("array_size").get<uint32_t>()};
 }
 
-json member_json(const BlockMember& m) {
-  json members = json::array();
+ordered member_json(const BlockMember& m) {
+  ordered members = ordered::array();
   for (const BlockMember& child : m.members) members.push_back(member_json(child));
   return {{"name", m.name},
           {"type", m.type},
@@ -65,8 +66,8 @@ BlockMember member_from(const json& j, int depth = 0) {
   return m;
 }
 
-json block_json(const UniformBlock& b) {
-  json members = json::array();
+ordered block_json(const UniformBlock& b) {
+  ordered members = ordered::array();
   for (const BlockMember& m : b.members) members.push_back(member_json(m));
   return {{"name", b.name}, {"set", b.set}, {"binding", b.binding}, {"size", b.size},
           {"push_constant", b.push_constant}, {"members", std::move(members)}};
@@ -83,7 +84,7 @@ UniformBlock block_from(const json& j) {
   return b;
 }
 
-json resource_json(const ResourceBinding& r) {
+ordered resource_json(const ResourceBinding& r) {
   return {{"name", r.name}, {"kind", resource_kind_name(r.kind)}, {"dim", r.dim}, {"arrayed", r.arrayed},
           {"set", r.set},   {"binding", r.binding},                {"array_size", r.array_size}};
 }
@@ -101,8 +102,8 @@ ResourceBinding resource_from(const json& j) {
 }
 
 template <typename T, typename F>
-json array_of(const std::vector<T>& items, F&& to) {
-  json out = json::array();
+ordered array_of(const std::vector<T>& items, F&& to) {
+  ordered out = ordered::array();
   for (const T& item : items) out.push_back(to(item));
   return out;
 }
@@ -124,8 +125,8 @@ std::string_view resource_kind_name(ResourceKind kind) {
   return "unknown";
 }
 
-void to_json(nlohmann::json& j, const StageReflection& r) {
-  j = json::object();
+nlohmann::ordered_json reflection_to_ordered_json(const StageReflection& r) {
+  ordered j = ordered::object();
   j["stage"] = std::string(stage_name(r.stage));
   j["entry_point"] = r.entry_point;
   j["inputs"] = array_of(r.inputs, variable_json);
@@ -133,12 +134,16 @@ void to_json(nlohmann::json& j, const StageReflection& r) {
   j["uniform_blocks"] = array_of(r.uniform_blocks, block_json);
   j["resources"] = array_of(r.resources, resource_json);
   j["spec_constants"] = array_of(r.spec_constants, [](const SpecConstant& s) {
-    return json{{"name", s.name}, {"id", s.id}, {"type", s.type}, {"default_value", s.default_value}};
+    return ordered{{"name", s.name}, {"id", s.id}, {"type", s.type}, {"default_value", s.default_value}};
   });
   j["property_bindings"] = array_of(r.property_bindings, [](const PropertyBinding& p) {
-    return json{{"property", p.property}, {"role", p.role}, {"block", p.block}, {"member", p.member}};
+    return ordered{{"property", p.property}, {"role", p.role}, {"block", p.block}, {"member", p.member}};
   });
+  return j;
 }
+
+// nlohmann::json keeps its keys sorted: the same reflection, the same bytes.
+void to_json(nlohmann::json& j, const StageReflection& r) { j = nlohmann::json(reflection_to_ordered_json(r)); }
 
 void from_json(const nlohmann::json& j, StageReflection& r) {
   auto stage = parse_stage(j.at("stage").get<std::string>());
