@@ -115,8 +115,8 @@ std::optional<NaivePlan> plan_naive(const Options& o, const fs::path& shader_pat
   if (!passes) return std::nullopt;
   NaivePlan plan;
   for (const facet::SelectedPass& pass : *passes) {
-    auto keys = compiler.select_variants(pass, {}, diags);
-    if (!keys) return std::nullopt;
+    auto set = compiler.select_variants(pass, {}, diags);
+    if (!set) return std::nullopt;
     const facet::ir::Program& program = *pass.ir->program;
     std::map<facet::Stage, fs::path> sources_of;
     for (facet::Stage stage : {facet::Stage::vertex, facet::Stage::fragment}) {
@@ -126,14 +126,14 @@ std::optional<NaivePlan> plan_naive(const Options& o, const fs::path& shader_pat
       std::ofstream(file) << *text;
       sources_of[stage] = file;
     }
-    for (size_t k = 0; k < keys->size(); ++k) {
+    for (size_t k = 0; k < set->keys.size(); ++k) {
       for (facet::Stage stage : {facet::Stage::vertex, facet::Stage::fragment}) {
         ++plan.all;
         if (k % o.naive_every != 0) continue;
         Job job{{o.glslc, "-x", "hlsl", fmt::format("-fshader-stage={}", facet::stage_name(stage)),
                  "-fentry-point=" + program.entry_points[size_t(stage)], "--target-env=vulkan1.1", "-O",
                  "-I", facet::backend::default_stdlib_dir()}};
-        for (const std::string& kw : facet::variants::stage_keywords(pass.keywords, (*keys)[k], stage)) {
+        for (const std::string& kw : facet::variants::stage_keywords(pass.keywords, set->keys[k], stage)) {
           job.argv.push_back("-D" + kw);
         }
         job.argv.push_back(sources_of[stage].string());

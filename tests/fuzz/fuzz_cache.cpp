@@ -61,10 +61,10 @@ void write_seeds(const std::string& dir) {
   const package::PackageVariant& variant = compiled.package.passes.at(0).variants.at(0);
   int n = 0;
   for (const package::PackageStage& stage : variant.stages) {
-    cache::CacheEntry entry{.spirv = compiled.package.spirv_blobs.at(stage.blob),
-                            .reflection = stage.reflection,
-                            .included_files = {"Example.shader", "UnityCG.cginc"},
-                            .token_hash = 0x0123456789abcdefull};
+    cache::CacheEntry entry{{.spirv = compiled.package.spirv_blobs.at(stage.blob),
+                             .reflection = stage.reflection,
+                             .included_files = {"Example.shader", "UnityCG.cginc"}},
+                            /*token_hash=*/0x0123456789abcdefull};
     fuzz::write_seed(dir, fmt::format("entry{}.bin", n++), cache::encode_entry(kKey, entry));
   }
   cache::IncludeManifest manifest{.entry_key = "entry0000", .token_hash = 0x0123456789abcdefull};

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/compiled_variant.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/reflection.h"
@@ -74,13 +75,6 @@ struct BackendOptions {
   InputLimits limits;
 };
 
-struct CompiledStage {
-  Stage stage = Stage::vertex;
-  std::vector<uint32_t> spirv;
-  StageReflection reflection;
-  std::vector<std::string> included_files;  // every file opened, transitively, sorted
-};
-
 // Owns glslang's process initialisation for its lifetime (one per process is
 // enough; several are safe). Calls that share a SourceMap must not overlap.
 //
@@ -107,7 +101,7 @@ class Backend {
                                   std::vector<std::string>* included_files = nullptr) const;
 
   // Compiles one stage of one variant. Errors are mapped to .shader positions.
-  Result<CompiledStage> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
+  Result<CompiledVariant> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
                                 SourceMap& sources, Diagnostics& diags) const;
 };

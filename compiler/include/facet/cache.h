@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "facet/compiled_variant.h"
 #include "facet/reflection.h"
 #include "facet/result.h"
 
@@ -39,11 +40,9 @@ inline constexpr uint64_t kMaxEntryBytes = uint64_t(64) << 20;
 // not a regular file, makes the manifest stale.
 inline constexpr uint64_t kMaxHashedFileBytes = uint64_t(64) << 20;
 
-// What one compiled stage program leaves behind.
-struct CacheEntry {
-  std::vector<uint32_t> spirv;
-  StageReflection reflection;
-  std::vector<std::string> included_files;  // sorted
+// What one compiled stage program leaves behind: the compiled variant and
+// the hash of the tokens it was compiled from.
+struct CacheEntry : CompiledVariant {
   // XXH3 of the program's preprocessed tokens, so that an include manifest
   // naming this entry for another program is caught.
   uint64_t token_hash = 0;

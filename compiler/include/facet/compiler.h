@@ -175,12 +175,10 @@ class Compiler {
   Result<std::vector<SelectedPass>> select_passes(const ir::Shader& shader, const CompileOptions& options,
                                                   Diagnostics& diags) const;
 
-  // The variants of one pass that `options` asks for, after stripping; the
-  // second form adds the number stripped to `*stripped`.
-  Result<std::vector<variants::VariantKey>> select_variants(const SelectedPass& pass, const CompileOptions& options,
-                                                            Diagnostics& diags) const;
-  Result<std::vector<variants::VariantKey>> select_variants(const SelectedPass& pass, const CompileOptions& options,
-                                                            Diagnostics& diags, uint64_t* stripped) const;
+  // The variants of one pass that `options` asks for, after stripping (the
+  // set says how many were stripped).
+  Result<variants::VariantSet> select_variants(const SelectedPass& pass, const CompileOptions& options,
+                                               Diagnostics& diags) const;
 
   // Compiles the selected passes and variants into a package. Identical
   // messages from many variants are merged ("in 12 of 48 variants").

@@ -159,6 +159,19 @@ struct EnumerateOptions {
 Result<std::vector<VariantKey>> enumerate(const KeywordSpace& space, const EnumerateOptions& options,
                                           Diagnostics& diags);
 
+// ---- the variants of a build ----------------------------------------------
+
+// One pass's variants as the variant stage hands them on to the compile: the
+// pass's keyword space and the keys chosen from it (full keys of `space`, in
+// ascending order), after strip rules and filters.
+struct VariantSet {
+  KeywordSpace space;
+  std::vector<VariantKey> keys;
+  uint64_t stripped = 0;  // enumerated variants that stripping removed
+
+  std::vector<std::string> keywords(const VariantKey& key) const;  // all_keywords(space, key)
+};
+
 // ---- selection at draw time -----------------------------------------------
 
 struct SelectOptions {

@@ -310,7 +310,7 @@ bool fixed_errors(const std::vector<LogMessage>& before, const std::vector<LogMe
 constexpr int kMaxRetries = 16;
 
 // Backend::compile, on the worker thread.
-Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
+Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                     const std::vector<std::string>& keywords, const BackendOptions& options,
                                     SourceMap& sources, Diagnostics& diags) {
   Result<std::string> entry = entry_point(program, stage, diags);
@@ -386,8 +386,7 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
     return failure(fmt::format("{} stage did not compile", stage_name(stage)));
   }
 
-  CompiledStage result;
-  result.stage = stage;
+  CompiledVariant result;
   result.spirv = std::move(out.spirv);
   result.included_files = included_paths(*includer);
   // The word-level fix-ups come first: one of them lists interface variables
@@ -409,11 +408,11 @@ Result<CompiledStage> compile_stage(const ir::Shader& shader, const ir::Program&
 
 }  // namespace
 
-Result<CompiledStage> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
+Result<CompiledVariant> Backend::compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                        const std::vector<std::string>& keywords, const BackendOptions& options,
                                        SourceMap& sources, Diagnostics& diags) const {
   std::string timeout = time_limit_message(program, stage, options, sources);
-  std::optional<Result<CompiledStage>> result;
+  std::optional<Result<CompiledVariant>> result;
   run_on_worker([&] { result = compile_stage(shader, program, stage, keywords, options, sources, diags); },
                 options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);

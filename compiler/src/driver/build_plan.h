@@ -17,14 +17,12 @@
 
 namespace facet::driver {
 
-// The outcome of one stage program, shared by every variant that needs it.
-struct StageEntry {
+// The outcome of one stage program, shared by every variant that needs it:
+// the compiled variant when `ok`, and how it was had.
+struct StageEntry : CompiledVariant {
   bool ok = false;
   bool cache_hit = false;
   double seconds = 0;
-  std::vector<uint32_t> spirv;
-  StageReflection reflection;
-  std::vector<std::string> included_files;
   Diagnostics diags;
 };
 
@@ -43,7 +41,7 @@ struct StageTask {
 
 // The variants of each pass and, per (pass, stage, projected key), one task.
 struct Plan {
-  std::vector<std::vector<variants::VariantKey>> keys;  // per selected pass
+  std::vector<variants::VariantSet> variant_sets;  // per selected pass
   std::vector<StageTask> tasks;
   // (pass, stage, projected key) -> task index
   std::map<std::tuple<size_t, Stage, variants::VariantKey>, size_t> task_of;
@@ -60,7 +58,7 @@ struct BuildContext {
   unsigned jobs = 1;
 };
 
-Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector<variants::VariantKey>> keys);
+Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<variants::VariantSet> variant_sets);
 
 struct PreprocessCounters {
   uint64_t manifest_hits = 0;

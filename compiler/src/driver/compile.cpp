@@ -66,25 +66,30 @@ std::vector<ProgramRecord> program_records(const std::vector<StageTask>& tasks, 
 namespace {
 
 // The variants of every selected pass, stripped and sharded.
-Result<std::vector<std::vector<variants::VariantKey>>> select_keys(const Compiler& compiler,
-                                                                   const std::vector<SelectedPass>& passes,
-                                                                   const CompileOptions& options,
-                                                                   Diagnostics& diags, uint64_t& stripped) {
+Result<std::vector<variants::VariantSet>> select_variant_sets(const Compiler& compiler,
+                                                              const std::vector<SelectedPass>& passes,
+                                                              const CompileOptions& options, Diagnostics& diags) {
   bool failed = false;
-  std::vector<std::vector<variants::VariantKey>> keys;
+  std::vector<variants::VariantSet> sets;
   uint64_t variant_index = 0;
   for (const SelectedPass& sel : passes) {
-    auto k = compiler.select_variants(sel, options, diags, &stripped);
-    if (!k) failed = true;
-    keys.push_back(k ? std::move(*k) : std::vector<variants::VariantKey>{});
+    auto set = compiler.select_variants(sel, options, diags);
+    if (!set) failed = true;
+    sets.push_back(set ? std::move(*set) : variants::VariantSet{.space = sel.keywords});
     if (options.shard_count > 1) {
-      std::erase_if(keys.back(), [&](const variants::VariantKey&) {
+      std::erase_if(sets.back().keys, [&](const variants::VariantKey&) {
         return variant_index++ % options.shard_count != options.shard_index;
       });
     }
   }
   if (failed) return failure("variant selection failed");
-  return keys;
+  return sets;
+}
+
+uint64_t stripped_in(const std::vector<variants::VariantSet>& sets) {
+  uint64_t n = 0;
+  for (const variants::VariantSet& set : sets) n += set.stripped;
+  return n;
 }
 
 cache::CacheStores cache_stores(const CompileOptions& options) {
@@ -117,7 +122,7 @@ std::vector<size_t> stage_tasks(const BuildContext& ctx, const Plan& plan) {
   std::vector<size_t> out;
   for (size_t p = 0; p < ctx.passes.size(); ++p) {
     const SelectedPass& sel = ctx.passes[p];
-    for (const variants::VariantKey& key : plan.keys[p]) {
+    for (const variants::VariantKey& key : plan.variant_sets[p].keys) {
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
         if (!sel.ir->program->has_stage(stage)) continue;
@@ -148,7 +153,7 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
                             .keywords = sel.keywords};
     if (written.kind == ir::PassKind::use_pass) pp.state = sel.ir->state;
     std::vector<Diagnostics> per_variant;
-    for (const variants::VariantKey& key : plan.keys[p]) {
+    for (const variants::VariantKey& key : plan.variant_sets[p].keys) {
       Diagnostics variant_diags;
       package::PackageVariant pv{.key = key, .keywords = variants::all_keywords(sel.keywords, key)};
       bool variant_ok = true;
@@ -195,12 +200,11 @@ Result<std::vector<Compiler::ProgramJob>> Compiler::program_jobs(const ir::Shade
                                                                  Diagnostics& diags) const {
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
-  uint64_t stripped = 0;
-  auto keys = select_keys(*this, *passes, options, diags, stripped);
-  FACET_TRY(keys);
+  auto sets = select_variant_sets(*this, *passes, options, diags);
+  FACET_TRY(sets);
   const cache::CacheStores no_cache;
   const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
-  Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  Plan plan = driver::plan_tasks(*passes, std::move(*sets));
   driver::preprocess_tasks(ctx, plan);
   driver::assign_compilers(*passes, plan.tasks);
   std::vector<ProgramJob> jobs;
@@ -230,7 +234,7 @@ Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOp
   std::vector<SelectedPass> one{*pass};
   const BuildContext ctx{shader, options, sources, backend_, one, stores, 1};
   Plan plan;
-  plan.keys.resize(1);
+  plan.variant_sets.resize(1);
   plan.tasks.push_back({.pass = 0, .stage = job.stage, .keywords = job.keywords});
   driver::PreprocessCounters preprocessed = driver::preprocess_tasks(ctx, plan);
   driver::assign_compilers(one, plan.tasks);
@@ -274,7 +278,7 @@ std::optional<BuildEstimate> estimate_of_build(const Plan& plan, const std::vect
   if (compiled.empty()) return std::nullopt;
   BuildEstimate e{.programs = plan.tasks.size(), .unique = to_compile.size(),
                   .preprocess_seconds = preprocess_seconds, .jobs = jobs};
-  for (const auto& key_list : plan.keys) e.variants += key_list.size();
+  for (const variants::VariantSet& set : plan.variant_sets) e.variants += set.keys.size();
   finish_estimate(e, plan, estimate_sample(compiled, sample));
   return e;
 }
@@ -285,15 +289,14 @@ Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const Compile
                                         SourceMap& sources, Diagnostics& diags, size_t sample) const {
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
-  uint64_t stripped = 0;
-  auto keys = select_keys(*this, *passes, options, diags, stripped);
-  FACET_TRY(keys);
+  auto sets = select_variant_sets(*this, *passes, options, diags);
+  FACET_TRY(sets);
   const cache::CacheStores no_cache;
   const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
   BuildEstimate e{.jobs = ctx.jobs};
-  for (const auto& k : *keys) e.variants += k.size();
+  for (const variants::VariantSet& set : *sets) e.variants += set.keys.size();
   auto started = std::chrono::steady_clock::now();
-  Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  Plan plan = driver::plan_tasks(*passes, std::move(*sets));
   driver::preprocess_tasks(ctx, plan);
   e.unique = driver::assign_compilers(*passes, plan.tasks);
   e.programs = plan.tasks.size();
@@ -317,13 +320,12 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   CompileStats::Phases phases;
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
-  uint64_t stripped = 0;
-  auto keys = select_keys(*this, *passes, options, diags, stripped);
-  FACET_TRY(keys);
+  auto sets = select_variant_sets(*this, *passes, options, diags);
+  FACET_TRY(sets);
 
   const cache::CacheStores stores = cache_stores(options);
   const BuildContext ctx{shader, options, sources, backend_, *passes, stores, driver::worker_count(options.jobs)};
-  Plan plan = driver::plan_tasks(*passes, std::move(*keys));
+  Plan plan = driver::plan_tasks(*passes, std::move(*sets));
   phases.select = seconds_since_lap();
   driver::PreprocessCounters preprocessed = driver::preprocess_tasks(ctx, plan);
   size_t compiling = driver::assign_compilers(*passes, plan.tasks);
@@ -340,7 +342,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   Diagnostics invariant;
   if (!package::validate_package(pkg, invariant)) FACET_ICE("the driver built an invalid package");
   out.stats.stage_programs = plan.tasks.size();
-  out.stats.variants_stripped = stripped;
+  out.stats.variants_stripped = stripped_in(plan.variant_sets);
   out.stats.unique_preprocessed = compiling;
   out.stats.cache_hits = counters.hits;
   out.stats.cache_remote_hits = counters.remote_hits;

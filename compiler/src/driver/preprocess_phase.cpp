@@ -124,11 +124,11 @@ std::string hex_key(const std::string& context, const std::string& tokens) {
 
 }  // namespace
 
-Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector<variants::VariantKey>> keys) {
+Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<variants::VariantSet> variant_sets) {
   Plan plan;
   for (size_t p = 0; p < passes.size(); ++p) {
     const ir::Program& program = *passes[p].ir->program;
-    for (const variants::VariantKey& key : keys[p]) {
+    for (const variants::VariantKey& key : variant_sets[p].keys) {
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
         if (!program.has_stage(stage)) continue;
@@ -140,7 +140,7 @@ Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<std::vector
       }
     }
   }
-  plan.keys = std::move(keys);
+  plan.variant_sets = std::move(variant_sets);
   return plan;
 }
 

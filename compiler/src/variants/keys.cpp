@@ -56,4 +56,6 @@ VariantKey project(const KeywordSpace& space, const VariantKey& key, Stage stage
   return projected;
 }
 
+std::vector<std::string> VariantSet::keywords(const VariantKey& key) const { return all_keywords(space, key); }
+
 }  // namespace facet::variants

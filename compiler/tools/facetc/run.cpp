@@ -119,8 +119,8 @@ uint64_t build_id(const FacetcArgs& args, const Compiler& compiler, const ir::Sh
   auto passes = compiler.select_passes(shader, options, ignored);
   for (const SelectedPass& pass : passes ? *passes : std::vector<SelectedPass>{}) {
     field("pass", fmt::format("{}.{}", pass.subshader, pass.pass));
-    auto keys = compiler.select_variants(pass, options, ignored);
-    for (const variants::VariantKey& k : keys ? *keys : std::vector<variants::VariantKey>{}) {
+    auto set = compiler.select_variants(pass, options, ignored);
+    for (const variants::VariantKey& k : set ? set->keys : std::vector<variants::VariantKey>{}) {
       field("variant", fmt::format("{}", fmt::join(k.choice, ",")));
     }
   }

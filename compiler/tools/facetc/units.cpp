@@ -38,12 +38,12 @@ Result<std::vector<Unit>> collect_units(const FacetcArgs& args, const Compiler& 
   std::vector<Unit> units;
   bool failed = false;
   for (const SelectedPass& pass : passes) {
-    auto keys = compiler.select_variants(pass, options, diags);
-    if (!keys) {
+    auto set = compiler.select_variants(pass, options, diags);
+    if (!set) {
       failed = true;
       continue;
     }
-    for (const variants::VariantKey& key : *keys) {
+    for (const variants::VariantKey& key : set->keys) {
       for (Stage stage : stages_of(*pass.ir->program, args.stage)) {
         auto keywords = variants::stage_keywords(pass.keywords, key, stage);
         std::string label = fmt::format("{}, {} stage, keywords {{{}}}", describe_pass(pass), stage_name(stage),

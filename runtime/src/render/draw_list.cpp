@@ -98,7 +98,7 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
                                   asset.shader.name, record.pass);
   if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
   bool compiled = false;
-  Result<CompiledVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
+  Result<LoadedVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
   if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});
   if (compiled) {
     ++out.variants_compiled;

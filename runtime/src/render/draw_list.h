@@ -48,7 +48,7 @@ struct Draw {
   size_t object = 0;
   size_t pass = 0;  // into ShaderAsset::passes
   const LightValues* light = nullptr;
-  CompiledVariant* variant = nullptr;
+  LoadedVariant* variant = nullptr;
   PipelineState state;
   DrawRecord record;
 };

@@ -35,7 +35,7 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   return raw;
 }
 
-Result<CompiledVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
+Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                              const variants::VariantKey& key, bool* compiled) {
   auto id = std::make_pair(pass, key);
   if (auto it = asset.variants.find(id); it != asset.variants.end()) {
@@ -51,7 +51,7 @@ Result<CompiledVariant*, std::string> ShaderLibrary::variant(const Context& cont
   Diagnostics diags;
   Result<CompiledShader> out = compiler_.compile(asset.shader, options, asset.sources, diags);
   if (!out) return unexpected(render_text(diags, asset.sources));
-  auto variant = std::make_unique<CompiledVariant>();
+  auto variant = std::make_unique<LoadedVariant>();
   variant->package = std::move(out->package);
   if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {
     return unexpected(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected.pass));
@@ -61,7 +61,7 @@ Result<CompiledVariant*, std::string> ShaderLibrary::variant(const Context& cont
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, variant->package, v);
   if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected.pass, program.error()));
   variant->program = std::move(*program);
-  CompiledVariant* raw = variant.get();
+  LoadedVariant* raw = variant.get();
   asset.variants[id] = std::move(variant);
   *compiled = true;
   return raw;

@@ -14,7 +14,9 @@
 
 namespace facet::runtime {
 
-struct CompiledVariant {
+// A variant of one pass as the renderer holds it: its one-variant package
+// and its program on the GPU.
+struct LoadedVariant {
   package::Package package;
   std::unique_ptr<GpuProgram> program;
   std::vector<std::string> keywords;
@@ -25,11 +27,9 @@ struct ShaderAsset {
   SourceMap sources;
   ir::Shader shader;
   std::vector<SelectedPass> passes;  // of the SubShader in use; point into `shader`
-  int queue = 2000;                  // the SubShader's "Queue" tag
-  std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<CompiledVariant>> variants;
+  int queue = 2000;                  // the SubShader's render queue (sema resolves its Queue tag)
+  std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<LoadedVariant>> variants;
 };
-
-// "Geometry+1" -> 2001, "Transparent" -> 3000, "2450" -> 2450; nullopt if unreadable.
 
 class ShaderLibrary {
  public:
@@ -39,7 +39,7 @@ class ShaderLibrary {
   Result<ShaderAsset*, std::string> load(const std::string& path);
   // The variant of pass `pass` (an index into asset.passes) with this key,
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
-  Result<CompiledVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
+  Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                 const variants::VariantKey& key, bool* compiled);
   double seconds() const { return seconds_; }
   size_t loaded() const { return shaders_.size(); }

@@ -14,7 +14,7 @@ using testing::TestShader;
 
 class BackendCompileTest : public ::testing::Test {
  protected:
-  Result<CompiledStage> compile(TestShader& t, Stage stage, const std::vector<std::string>& keywords = {},
+  Result<CompiledVariant> compile(TestShader& t, Stage stage, const std::vector<std::string>& keywords = {},
                                 const BackendOptions& options = {}) {
     return backend_.compile(t.shader, t.program, stage, keywords, options, t.sources, diags_);
   }
@@ -29,7 +29,7 @@ TEST_F(BackendCompileTest, UnlitCgShaderCompilesBothStages) {
   for (Stage stage : {Stage::vertex, Stage::fragment}) {
     auto compiled = compile(t, stage);
     ASSERT_TRUE(compiled) << diagnostics(t);
-    EXPECT_EQ(compiled->stage, stage);
+    EXPECT_EQ(compiled->stage(), stage);
     EXPECT_GT(compiled->spirv.size(), 5u);
     EXPECT_EQ(compiled->spirv[0], 0x07230203u);  // SPIR-V magic
     EXPECT_TRUE(validate(compiled->spirv, TargetEnv::vulkan1_1, diags_)) << diagnostics(t);
@@ -232,7 +232,7 @@ TEST_F(BackendCompileTest, LightKeywordsChangeTheInterface) {
   auto point = compile(t, Stage::vertex, {"POINT"});
   auto directional = compile(t, Stage::vertex, {"DIRECTIONAL"});
   ASSERT_TRUE(point && directional) << diagnostics(t);
-  auto has_light_coord = [](const CompiledStage& c) {
+  auto has_light_coord = [](const CompiledVariant& c) {
     return std::any_of(c.reflection.outputs.begin(), c.reflection.outputs.end(),
                        [](const StageVariable& v) { return v.semantic == "TEXCOORD3"; });
   };

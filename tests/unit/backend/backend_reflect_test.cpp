@@ -116,12 +116,12 @@ class BackendReflectTest : public ::testing::Test {
       t_.shader.properties.push_back(testing::property(name, type));
     }
   }
-  CompiledStage compile(Stage stage, OptLevel opt = OptLevel::performance) {
+  CompiledVariant compile(Stage stage, OptLevel opt = OptLevel::performance) {
     BackendOptions options;
     options.opt = opt;
     auto compiled = backend_.compile(t_.shader, t_.program, stage, {}, options, t_.sources, diags_);
     EXPECT_TRUE(compiled) << render_text(diags_, t_.sources);
-    return compiled ? std::move(*compiled) : CompiledStage{};
+    return compiled ? std::move(*compiled) : CompiledVariant{};
   }
   static const UniformBlock* block(const StageReflection& r, const std::string& name) {
     for (const UniformBlock& b : r.uniform_blocks) {
@@ -144,7 +144,7 @@ class BackendReflectTest : public ::testing::Test {
 TEST_F(BackendReflectTest, OffsetsAndStridesEqualTheSpirvDecorations) {
   for (OptLevel opt : {OptLevel::none, OptLevel::performance}) {
     for (Stage stage : {Stage::vertex, Stage::fragment}) {
-      CompiledStage c = compile(stage, opt);
+      CompiledVariant c = compile(stage, opt);
       SpirvFacts facts(c.spirv);
       ASSERT_FALSE(c.reflection.uniform_blocks.empty());
       for (const UniformBlock& b : c.reflection.uniform_blocks) {
@@ -158,7 +158,7 @@ TEST_F(BackendReflectTest, OffsetsAndStridesEqualTheSpirvDecorations) {
 
 TEST_F(BackendReflectTest, SetsBindingsAndLocationsEqualTheSpirvDecorations) {
   for (Stage stage : {Stage::vertex, Stage::fragment}) {
-    CompiledStage c = compile(stage);
+    CompiledVariant c = compile(stage);
     SpirvFacts facts(c.spirv);
     auto id_of = [&](const std::string& name) {
       for (const auto& [id, n] : facts.names) {
@@ -179,7 +179,7 @@ TEST_F(BackendReflectTest, SetsBindingsAndLocationsEqualTheSpirvDecorations) {
 }
 
 TEST_F(BackendReflectTest, BlockLayoutDetails) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   const UniformBlock* scene = block(c.reflection, "Scene");
   ASSERT_TRUE(scene);
   EXPECT_EQ(scene->set, kMaterialSet);
@@ -209,7 +209,7 @@ TEST_F(BackendReflectTest, BlockLayoutDetails) {
 }
 
 TEST_F(BackendReflectTest, PushConstantsComeLast) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   ASSERT_FALSE(c.reflection.uniform_blocks.empty());
   const UniformBlock& push = c.reflection.uniform_blocks.back();
   EXPECT_TRUE(push.push_constant);
@@ -228,7 +228,7 @@ TEST_F(BackendReflectTest, PushConstantsComeLast) {
 
 TEST_F(BackendReflectTest, GlobalsBlockHoldsLooseUniformsAtBindingZero) {
   for (Stage stage : {Stage::vertex, Stage::fragment}) {
-    CompiledStage c = compile(stage);
+    CompiledVariant c = compile(stage);
     const UniformBlock* globals = block(c.reflection, kGlobalsBlock);
     ASSERT_TRUE(globals);
     EXPECT_EQ(globals->set, kMaterialSet);
@@ -242,7 +242,7 @@ TEST_F(BackendReflectTest, GlobalsBlockHoldsLooseUniformsAtBindingZero) {
 }
 
 TEST_F(BackendReflectTest, BuiltinBlocksHaveTheirFixedSets) {
-  CompiledStage c = compile(Stage::vertex);
+  CompiledVariant c = compile(Stage::vertex);
   const UniformBlock* frame = block(c.reflection, "FacetPerFrame");
   const UniformBlock* draw = block(c.reflection, "FacetPerDraw");
   ASSERT_TRUE(frame && draw);
@@ -254,8 +254,8 @@ TEST_F(BackendReflectTest, BuiltinBlocksHaveTheirFixedSets) {
 }
 
 TEST_F(BackendReflectTest, MaterialBindingsAgreeAcrossStages) {
-  CompiledStage vs = compile(Stage::vertex);
-  CompiledStage fs = compile(Stage::fragment);
+  CompiledVariant vs = compile(Stage::vertex);
+  CompiledVariant fs = compile(Stage::fragment);
   const UniformBlock* vs_scene = block(vs.reflection, "Scene");
   const UniformBlock* fs_scene = block(fs.reflection, "Scene");
   ASSERT_TRUE(vs_scene && fs_scene);
@@ -273,8 +273,8 @@ TEST_F(BackendReflectTest, MaterialBindingsAgreeAcrossStages) {
 }
 
 TEST_F(BackendReflectTest, InterfaceLocationsFollowSemantics) {
-  CompiledStage vs = compile(Stage::vertex);
-  CompiledStage fs = compile(Stage::fragment);
+  CompiledVariant vs = compile(Stage::vertex);
+  CompiledVariant fs = compile(Stage::fragment);
   std::map<std::string, uint32_t> in, out, frag_in;
   for (const StageVariable& v : vs.reflection.inputs) in[v.semantic] = v.location;
   for (const StageVariable& v : vs.reflection.outputs) out[v.semantic] = v.location;
@@ -290,7 +290,7 @@ TEST_F(BackendReflectTest, InterfaceLocationsFollowSemantics) {
 }
 
 TEST_F(BackendReflectTest, ResourcesHaveKindsAndDimensions) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   std::map<std::string, ResourceBinding> by_name;
   for (const ResourceBinding& r : c.reflection.resources) by_name[r.name] = r;
   EXPECT_EQ(by_name.at("_MainTex").kind, ResourceKind::combined_image_sampler);
@@ -308,7 +308,7 @@ TEST_F(BackendReflectTest, ResourcesHaveKindsAndDimensions) {
 }
 
 TEST_F(BackendReflectTest, PropertiesBindToUniformsAndTextures) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   std::vector<std::string> got;
   for (const PropertyBinding& p : c.reflection.property_bindings) {
     got.push_back(p.property + " " + p.role + " " + p.block + "." + p.member);
@@ -325,7 +325,7 @@ TEST_F(BackendReflectTest, PropertiesBindToUniformsAndTextures) {
 }
 
 TEST_F(BackendReflectTest, SemanticDecorationsAreStrippedFromTheOutput) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   std::string text = disassemble(c.spirv);
   EXPECT_EQ(text.find("UserSemantic"), std::string::npos);
   EXPECT_EQ(text.find("SPV_GOOGLE_hlsl_functionality1"), std::string::npos);
@@ -333,7 +333,7 @@ TEST_F(BackendReflectTest, SemanticDecorationsAreStrippedFromTheOutput) {
 }
 
 TEST_F(BackendReflectTest, JsonRoundTripsAndIsDeterministic) {
-  CompiledStage c = compile(Stage::fragment);
+  CompiledVariant c = compile(Stage::fragment);
   std::string text = reflection_to_json_text(c.reflection);
   auto back = reflection_from_json_text(text);
   ASSERT_TRUE(back) << back.error().reason;

@@ -65,7 +65,7 @@ const ResourceBinding* find_resource(const StageReflection& r, const std::string
 
 class GlslUnityTest : public ::testing::Test {
  protected:
-  Result<CompiledStage> compile(TestShader& t, Stage stage, const std::vector<std::string>& keywords = {}) {
+  Result<CompiledVariant> compile(TestShader& t, Stage stage, const std::vector<std::string>& keywords = {}) {
     return backend_.compile(t.shader, t.program, stage, keywords, {}, t.sources, diags_);
   }
   std::string text(TestShader& t, Stage stage) {

@@ -12,7 +12,7 @@ namespace {
 // empty vector's data(), a null pointer, which memcpy may not be given.
 TEST(CacheEntryFuzzRegressionTest, DecodesAnEntryWithNoSpirvWords) {
   const std::string key = "fuzz0000000000000000000000000000";
-  CacheEntry entry{.included_files = {"Example.shader"}, .token_hash = 0x0123456789abcdefull};
+  CacheEntry entry{{.included_files = {"Example.shader"}}, /*token_hash=*/0x0123456789abcdefull};
   auto decoded = decode_entry(encode_entry(key, entry), key);
   ASSERT_TRUE(decoded) << decoded.error().reason;
   EXPECT_TRUE(decoded->spirv.empty());

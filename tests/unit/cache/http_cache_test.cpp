@@ -61,7 +61,7 @@ TEST(CacheHttpTest, ServerDownIsAMissNotAFailure) {
 TEST(CacheHttpTest, AnEntryServedForAnotherKeyIsRefused) {
   test_http::TestHttpServer server(sha256_hex);
   const std::string key = "0123456789abcdef0123456789abcdef", other = "fedcba9876543210fedcba9876543210";
-  CacheEntry entry{.spirv = {0x07230203, 1, 2, 3}, .token_hash = 5};
+  CacheEntry entry{{.spirv = {0x07230203, 1, 2, 3}}, /*token_hash=*/5};
   CacheStores stores{.remote = HttpCache(server.url())};
   stores.store_entry(other, entry);
   server.set("/ac/" + sha256_hex(key), server.objects().at("/ac/" + sha256_hex(other)));

@@ -1,4 +1,4 @@
-// Which passes and variants a compile covers.
+// Which passes and variants a build compiles (select_passes, select_variants).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -114,7 +114,7 @@ bool strips_anything(const SelectedPass& pass, const CompileOptions& options) {
 
 // The enumerated keys that survive the keyword rules, the filter and the callback.
 std::vector<variants::VariantKey> surviving(const SelectedPass& pass, std::vector<variants::VariantKey> keys,
-                                            const CompileOptions& options, uint64_t* stripped) {
+                                            const CompileOptions& options, uint64_t& stripped) {
   if (!strips_anything(pass, options)) return keys;
   std::vector<variants::VariantKey> out;
   for (variants::VariantKey& key : keys) {
@@ -123,21 +123,15 @@ std::vector<variants::VariantKey> surviving(const SelectedPass& pass, std::vecto
     if (keep && options.variant_filter) keep = options.variant_filter({*pass.ir, pass.pass, keywords});
     if (keep) out.push_back(std::move(key));
   }
-  if (stripped) *stripped += keys.size() - out.size();
+  stripped += keys.size() - out.size();
   return out;
 }
 
 }  // namespace
 
-Result<std::vector<variants::VariantKey>> Compiler::select_variants(const SelectedPass& pass,
-                                                                    const CompileOptions& options,
-                                                                    Diagnostics& diags) const {
-  return select_variants(pass, options, diags, nullptr);
-}
-
-Result<std::vector<variants::VariantKey>> Compiler::select_variants(const SelectedPass& pass,
-                                                                    const CompileOptions& options,
-                                                                    Diagnostics& diags, uint64_t* stripped) const {
+Result<variants::VariantSet> Compiler::select_variants(const SelectedPass& pass, const CompileOptions& options,
+                                                       Diagnostics& diags) const {
+  variants::VariantSet set{.space = pass.keywords};
   variants::EnumerateOptions enumerate{.materials = options.materials,
                                        .drop_unreachable = !options.build_unreachable,
                                        .max_variants = options.max_variants_per_pass == 0
@@ -149,16 +143,19 @@ Result<std::vector<variants::VariantKey>> Compiler::select_variants(const Select
     if (strips_anything(pass, options) || options.materials) {
       auto keys = variants::enumerate(pass.keywords, enumerate, diags);
       FACET_TRY(keys);
-      available = surviving(pass, std::move(*keys), options, nullptr);
+      uint64_t not_counted = 0;  // a draw-time pick strips nothing from the build
+      available = surviving(pass, std::move(*keys), options, not_counted);
       select.available = &available;
     }
     auto chosen = variants::select_variant(pass.keywords, *options.keywords, {}, select, diags);
     FACET_TRY(chosen);
-    return std::vector<variants::VariantKey>{chosen->key};
+    set.keys.push_back(chosen->key);
+    return set;
   }
   auto keys = variants::enumerate(pass.keywords, enumerate, diags);
   FACET_TRY(keys);
-  return surviving(pass, std::move(*keys), options, stripped);
+  set.keys = surviving(pass, std::move(*keys), options, set.stripped);
+  return set;
 }
 
 }  // namespace facet
