@@ -85,6 +85,8 @@ struct BackendOptions {
 //   if (!fs) return;                        // diags say why, at .shader positions
 //   auto glsl = backend::cross_compile(fs->spirv, Stage::fragment, backend::CrossTarget::glsl450, diags);
 //   nlohmann::json j = fs->reflection;     // facet/reflection_json.h
+class IncludeScanCache;
+
 class Backend {
  public:
   Backend();
@@ -104,6 +106,11 @@ class Backend {
   Result<CompiledVariant> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
                                 SourceMap& sources, Diagnostics& diags) const;
+
+ private:
+  // The scans of included texts, shared by every program this Backend
+  // preprocesses or compiles (include_scan.h).
+  std::shared_ptr<IncludeScanCache> scan_cache_;
 };
 
 // Compiles a self-contained HLSL compute shader (DX9 compatibility, as for

@@ -16,6 +16,7 @@
 #include "argument_casts.h"
 #include "glslang_frontend.h"
 #include "hlsl_rewrite.h"
+#include "include_scan.h"
 #include "includer.h"
 #include "info_log.h"
 #include "reflect.h"
@@ -138,7 +139,7 @@ std::string default_stdlib_dir() {
 #endif
 }
 
-Backend::Backend() { glslang::InitializeProcess(); }
+Backend::Backend() : scan_cache_(std::make_shared<IncludeScanCache>()) { glslang::InitializeProcess(); }
 
 Backend::~Backend() { glslang::FinalizeProcess(); }
 
@@ -147,9 +148,11 @@ namespace {
 Result<std::string> preprocess_source(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                       const std::vector<std::string>& keywords, const BackendOptions& options,
                                       SourceMap& sources, Diagnostics& diags,
-                                      std::vector<std::string>* included_files) {
+                                      std::vector<std::string>* included_files,
+                                      const std::shared_ptr<IncludeScanCache>& scan_cache) {
   AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
-  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib_dir(options), diags);
+  std::unique_ptr<FileIncluder> includer =
+      checked_includer(program, source, options, stdlib_dir(options), diags, scan_cache);
   if (!includer) return failure("input limit");
   GlslangOutput out = preprocess_glslang(source, program.language, stage, options, *includer);
   add_included_files(*includer, sources);
@@ -180,8 +183,10 @@ Result<std::string> Backend::source_text(const ir::Shader& shader, const ir::Pro
   }
   std::string timeout = time_limit_message(program, stage, options, sources);
   std::optional<Result<std::string>> result;
-  run_on_worker([&] { result = preprocess_source(shader, program, stage, keywords, options, sources, diags,
-                                                 included_files); },
+  run_on_worker([&, scan_cache = scan_cache_] {
+                  result = preprocess_source(shader, program, stage, keywords, options, sources, diags,
+                                             included_files, scan_cache);
+                },
                 options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);
 }
@@ -312,12 +317,14 @@ constexpr int kMaxRetries = 16;
 // Backend::compile, on the worker thread.
 Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                     const std::vector<std::string>& keywords, const BackendOptions& options,
-                                    SourceMap& sources, Diagnostics& diags) {
+                                    SourceMap& sources, Diagnostics& diags,
+                                    const std::shared_ptr<IncludeScanCache>& scan_cache) {
   Result<std::string> entry = entry_point(program, stage, diags);
   if (!entry) return unexpected(entry.error());
   size_t errors_before = diags.error_count();
   AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
-  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib_dir(options), diags);
+  std::unique_ptr<FileIncluder> includer =
+      checked_includer(program, source, options, stdlib_dir(options), diags, scan_cache);
   if (!includer) return failure("input limit");
   GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, *includer);
   // fxc truncates a wider vector argument (X3206) where glslang finds no
@@ -348,7 +355,8 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
     all_assigned.insert(all_assigned.end(), more_assigned.begin(), more_assigned.end());
     AssembledSource retry_source = assemble_source(retry, stage, keywords, options, shader_path(shader, sources));
     Diagnostics refused;  // the program's text passed these checks before its rewrites
-    std::unique_ptr<FileIncluder> retry_includer = checked_includer(retry, retry_source, options, stdlib_dir(options), refused);
+    std::unique_ptr<FileIncluder> retry_includer =
+        checked_includer(retry, retry_source, options, stdlib_dir(options), refused, scan_cache);
     if (!retry_includer) break;
     retry_includer->set_assigned_uniforms(all_assigned);
     retry_includer->set_overrides(retry_overrides);
@@ -413,7 +421,9 @@ Result<CompiledVariant> Backend::compile(const ir::Shader& shader, const ir::Pro
                                        SourceMap& sources, Diagnostics& diags) const {
   std::string timeout = time_limit_message(program, stage, options, sources);
   std::optional<Result<CompiledVariant>> result;
-  run_on_worker([&] { result = compile_stage(shader, program, stage, keywords, options, sources, diags); },
+  run_on_worker([&, scan_cache = scan_cache_] {
+                  result = compile_stage(shader, program, stage, keywords, options, sources, diags, scan_cache);
+                },
                 options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);
 }

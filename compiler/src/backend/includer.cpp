@@ -86,8 +86,12 @@ std::optional<std::string> read_text_file(const std::string& path) {
   return text;
 }
 
-FileIncluder::FileIncluder(const BackendOptions& options, std::string stdlib_dir)
-    : options_(options), stdlib_dir_(std::move(stdlib_dir)), macro_budget_(options.limits.max_preprocessed_bytes) {}
+FileIncluder::FileIncluder(const BackendOptions& options, std::string stdlib_dir,
+                           std::shared_ptr<IncludeScanCache> scan_cache)
+    : options_(options),
+      stdlib_dir_(std::move(stdlib_dir)),
+      scan_cache_(std::move(scan_cache)),
+      macro_budget_(options.limits.max_preprocessed_bytes) {}
 
 FileIncluder::~FileIncluder() = default;
 
@@ -148,15 +152,15 @@ std::optional<IncludeRefusal> FileIncluder::over_budget(const char* header, uint
 
 // Text glslang must not see: what would overflow its stack, or expand
 // past the program's budget.
-std::optional<IncludeRefusal> FileIncluder::check_text(const std::string& path, const std::string& text,
+std::optional<IncludeRefusal> FileIncluder::check_text(const std::string& path, const ScannedText& scanned,
                                                        const char* header) {
-  if (auto hazard = find_recursion_hazard(text)) {
+  if (const std::optional<RecursionHazard>& hazard = scanned.hazard) {
     return IncludeRefusal{.header = header, .id = DiagId::backend_nesting_too_deep, .message = hazard->message,
-                          .path = path, .text = text, .offset = hazard->offset};
+                          .path = path, .text = scanned.text, .offset = hazard->offset};
   }
-  if (auto excess = macro_budget_.add_text(text)) {
+  if (auto excess = macro_budget_.add_lines(scanned.lines)) {
     return IncludeRefusal{.header = header, .id = DiagId::backend_input_limit, .message = excess->message,
-                          .path = path, .text = text, .offset = excess->offset, .budget = true};
+                          .path = path, .text = scanned.text, .offset = excess->offset, .budget = true};
   }
   return std::nullopt;
 }
@@ -168,9 +172,11 @@ glslang::TShader::Includer::IncludeResult* FileIncluder::found(std::string path,
   include_bytes_ += text.size();
   if (auto o = overrides_.find(path); o != overrides_.end()) text = o->second;
   while (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // UTF-8 byte-order marks: glslang rejects them
-  if (auto refusal = check_text(path, text, header)) return refuse(std::move(*refusal));
+  std::shared_ptr<const ScannedText> scanned = scan_cache_ ? scan_cache_->scan(std::move(text)) : scan_text(std::move(text));
+  if (auto refusal = check_text(path, *scanned, header)) return refuse(std::move(*refusal));
   records_.push_back({path, includer ? includer : "", header, system});
-  if (!is_glsl_file(path)) text = rewrite_assigned_uniforms(rewrite_matrix_swizzles(text), assigned_uniforms_);
+  text = is_glsl_file(path) ? scanned->text
+                            : rewrite_assigned_uniforms(rewrite_matrix_swizzles(scanned->text), assigned_uniforms_);
   texts_.emplace_back(std::move(path), std::move(text));
   const auto& [p, t] = texts_.back();
   return new IncludeResult(p, t.data(), t.size(), nullptr);
@@ -234,8 +240,8 @@ void FileIncluder::releaseInclude(IncludeResult* result) { delete result; }
 // with a located error, when that text is refused (check_program_text).
 std::unique_ptr<FileIncluder> checked_includer(const ir::Program& program, const AssembledSource& source,
                                                const BackendOptions& options, const std::string& stdlib_dir,
-                                               Diagnostics& diags) {
-  auto includer = std::make_unique<FileIncluder>(options, stdlib_dir);
+                                               Diagnostics& diags, std::shared_ptr<IncludeScanCache> scan_cache) {
+  auto includer = std::make_unique<FileIncluder>(options, stdlib_dir, std::move(scan_cache));
   if (!check_program_text(program, source, includer->macro_budget(), diags)) return nullptr;
   return includer;
 }

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "include_scan.h"
 #include "macro_budget.h"
 #include "source_assembly.h"
 #include "facet/backend.h"
@@ -54,7 +55,10 @@ struct IncludeRefusal {
 
 class FileIncluder final : public glslang::TShader::Includer {
  public:
-  FileIncluder(const BackendOptions& options, std::string stdlib_dir);
+  // `scan_cache` (may be null) shares the scans of included texts with the
+  // other includers of the same Backend.
+  FileIncluder(const BackendOptions& options, std::string stdlib_dir,
+               std::shared_ptr<IncludeScanCache> scan_cache = nullptr);
   ~FileIncluder() override;
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
@@ -88,11 +92,12 @@ class FileIncluder final : public glslang::TShader::Includer {
   IncludeResult* refuse(IncludeRefusal refusal);
   // A budget refusal already given, or one `size` more bytes would cause.
   std::optional<IncludeRefusal> over_budget(const char* header, uint64_t size) const;
-  std::optional<IncludeRefusal> check_text(const std::string& path, const std::string& text, const char* header);
+  std::optional<IncludeRefusal> check_text(const std::string& path, const ScannedText& text, const char* header);
   IncludeResult* search(const std::vector<std::string>& dirs, const char* header, const char* includer, bool system);
 
   const BackendOptions& options_;
   std::string stdlib_dir_;
+  std::shared_ptr<IncludeScanCache> scan_cache_;
   std::vector<IncludeRecord> records_;
   std::vector<IncludeRefusal> refusals_;
   MacroBudget macro_budget_;
@@ -108,7 +113,8 @@ class FileIncluder final : public glslang::TShader::Includer {
 // past the budget (MacroBudget).
 std::unique_ptr<FileIncluder> checked_includer(const ir::Program& program, const AssembledSource& source,
                                                const BackendOptions& options, const std::string& stdlib_dir,
-                                               Diagnostics& diags);
+                                               Diagnostics& diags,
+                                               std::shared_ptr<IncludeScanCache> scan_cache = nullptr);
 
 // Reads a whole file; nullopt when it cannot be read (or is not a regular file).
 std::optional<std::string> read_text_file(const std::string& path);

@@ -16,15 +16,9 @@ uint64_t mul(uint64_t x, uint64_t y) { return x != 0 && y > kSaturated / x ? kSa
 bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// The logical lines of a text (continuations joined) outside comments, as
-// one run of tokens: a line is [lines[k], lines[k + 1]) of `tokens`. A
-// string literal is one token.
-struct TokenLines {
-  std::vector<MacroBudget::Token> tokens;
-  std::vector<size_t> starts{0};
-};
+}  // namespace
 
-TokenLines token_lines(std::string_view text) {
+MacroBudget::TokenLines MacroBudget::tokenize(std::string_view text) {
   TokenLines out;
   out.tokens.reserve(text.size() / 4);
   for (size_t i = 0; i < text.size();) {
@@ -56,6 +50,8 @@ TokenLines token_lines(std::string_view text) {
   out.starts.push_back(out.tokens.size());
   return out;
 }
+
+namespace {
 
 std::vector<std::string_view> split_body(const std::string& body) {
   std::vector<std::string_view> out;
@@ -92,8 +88,7 @@ std::string MacroBudget::too_big(std::string_view what, uint64_t bytes) const {
                      what, mib(bytes), mib(max_bytes_));
 }
 
-std::optional<MacroExcess> MacroBudget::add_text(std::string_view text) {
-  const TokenLines lines = token_lines(text);
+std::optional<MacroExcess> MacroBudget::add_lines(const TokenLines& lines) {
   std::span<const Token> all(lines.tokens);
   // The code since the last directive: a call's arguments do not span one.
   size_t code_begin = 0;

@@ -46,15 +46,26 @@ class MacroBudget {
   // `max_bytes`: the budget for the program's preprocessed text; 0: none.
   explicit MacroBudget(uint64_t max_bytes) : max_bytes_(max_bytes) {}
 
-  // Reads the #defines and code of one text; the first excess, if any.
-  std::optional<MacroExcess> add_text(std::string_view text);
-
-  uint64_t estimated_bytes() const { return total_; }
-
   struct Token {
     std::string_view text;
     size_t offset;
   };
+  // The logical lines of a text (continuations joined) outside comments, as
+  // one run of tokens: line k is [starts[k], starts[k + 1]) of `tokens`. A
+  // string literal is one token; tokens view the text.
+  struct TokenLines {
+    std::vector<Token> tokens;
+    std::vector<size_t> starts{0};
+  };
+  static TokenLines tokenize(std::string_view text);
+
+  // Reads the #defines and code of one text; the first excess, if any.
+  std::optional<MacroExcess> add_text(std::string_view text) { return add_lines(tokenize(text)); }
+  // The same, of a text tokenize() has read (offsets are into that text).
+  std::optional<MacroExcess> add_lines(const TokenLines& lines);
+
+  uint64_t estimated_bytes() const { return total_; }
+
   // Size of an expansion: at most a + b * (the largest argument's size).
   struct Size {
     uint64_t a = 0, b = 0;
