@@ -95,7 +95,7 @@ CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::ve
     e.included_files = std::move(compiled->included_files);
     // Only clean compiles are stored: a hit replays no diagnostics.
     if (store && !t.cache_key.empty() && e.diags.size() == 0) {
-      ctx.stores.store_entry(t.cache_key, {e.spirv, e.reflection, e.included_files, t.text_hash});
+      ctx.stores.store_entry(t.cache_key, {static_cast<const CompiledVariant&>(e), t.text_hash});
     }
   });
   std::sort(problems.begin(), problems.end());  // the same order whichever thread finished first
