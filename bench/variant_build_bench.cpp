@@ -107,6 +107,7 @@ struct NaivePlan {
 // with the variant's keywords as -D flags.
 std::optional<NaivePlan> plan_naive(const Options& o, const fs::path& shader_path) {
   facet::Compiler compiler;
+  const facet::backend::Backend backend;
   facet::SourceMap sources;
   facet::Diagnostics diags;
   auto shader = compiler.load(shader_path.string(), sources, diags);
@@ -120,10 +121,10 @@ std::optional<NaivePlan> plan_naive(const Options& o, const fs::path& shader_pat
     const facet::ir::Program& program = *pass.ir->program;
     std::map<facet::Stage, fs::path> sources_of;
     for (facet::Stage stage : {facet::Stage::vertex, facet::Stage::fragment}) {
-      auto text = compiler.backend().source_text(*shader, program, stage, {}, {}, false, sources, diags);
-      if (!text) return std::nullopt;
+      auto source = backend.source_text(*shader, program, {.stage = stage, .preprocess = false}, {}, sources, diags);
+      if (!source) return std::nullopt;
       fs::path file = shader_path.parent_path() / fmt::format("naive_{}.hlsl", facet::stage_name(stage));
-      std::ofstream(file) << *text;
+      std::ofstream(file) << source->text;
       sources_of[stage] = file;
     }
     for (size_t k = 0; k < set->keys.size(); ++k) {

@@ -87,6 +87,18 @@ struct BackendOptions {
 //   nlohmann::json j = fs->reflection;     // facet/reflection_json.h
 class IncludeScanCache;
 
+// Which text Backend::source_text gives: one stage of one variant.
+struct SourceRequest {
+  Stage stage = Stage::vertex;
+  std::vector<std::string> keywords;  // the variant's keywords that the stage sees
+  bool preprocess = true;             // false: the assembled text, before glslang's preprocessor
+};
+
+struct SourceText {
+  std::string text;
+  std::vector<std::string> included_files;  // every file opened, sorted; empty when not preprocessed
+};
+
 class Backend {
  public:
   Backend();
@@ -95,12 +107,9 @@ class Backend {
   Backend& operator=(const Backend&) = delete;
 
   // The text glslang would see for this stage and keywords (prelude, defines,
-  // #line-mapped program), after preprocessing when `preprocess` is true;
-  // then `included_files`, when given, receives every file opened, sorted.
-  Result<std::string> source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
-                                  const std::vector<std::string>& keywords, const BackendOptions& options,
-                                  bool preprocess, SourceMap& sources, Diagnostics& diags,
-                                  std::vector<std::string>* included_files = nullptr) const;
+  // #line-mapped program), after preprocessing when the request says so.
+  Result<SourceText> source_text(const ir::Shader& shader, const ir::Program& program, const SourceRequest& request,
+                                 const BackendOptions& options, SourceMap& sources, Diagnostics& diags) const;
 
   // Compiles one stage of one variant. Errors are mapped to .shader positions.
   Result<CompiledVariant> compile(const ir::Shader& shader, const ir::Program& program, Stage stage,

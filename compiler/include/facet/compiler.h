@@ -206,8 +206,6 @@ class Compiler {
   Result<BuildEstimate> estimate(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                  Diagnostics& diags, size_t sample = kEstimateSample) const;
 
-  const backend::Backend& backend() const { return backend_; }
-
  private:
   backend::Backend backend_;
 };

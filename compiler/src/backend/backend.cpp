@@ -174,21 +174,24 @@ Result<std::string> preprocess_source(const ir::Shader& shader, const ir::Progra
 
 }  // namespace
 
-Result<std::string> Backend::source_text(const ir::Shader& shader, const ir::Program& program, Stage stage,
-                                         const std::vector<std::string>& keywords, const BackendOptions& options,
-                                         bool preprocess, SourceMap& sources, Diagnostics& diags,
-                                         std::vector<std::string>* included_files) const {
-  if (!preprocess) {
-    return assemble_source(program, stage, keywords, options, shader_path(shader, sources)).text;
+Result<SourceText> Backend::source_text(const ir::Shader& shader, const ir::Program& program,
+                                        const SourceRequest& request, const BackendOptions& options,
+                                        SourceMap& sources, Diagnostics& diags) const {
+  if (!request.preprocess) {
+    return SourceText{
+        .text = assemble_source(program, request.stage, request.keywords, options, shader_path(shader, sources)).text};
   }
-  std::string timeout = time_limit_message(program, stage, options, sources);
+  std::string timeout = time_limit_message(program, request.stage, options, sources);
+  SourceText out;
   std::optional<Result<std::string>> result;
   run_on_worker([&, scan_cache = scan_cache_] {
-                  result = preprocess_source(shader, program, stage, keywords, options, sources, diags,
-                                             included_files, scan_cache);
+                  result = preprocess_source(shader, program, request.stage, request.keywords, options, sources, diags,
+                                             &out.included_files, scan_cache);
                 },
                 options.limits.time_limit_s, [&] { return timeout; });
-  return std::move(*result);
+  if (!*result) return unexpected(result->error());
+  out.text = std::move(**result);
+  return out;
 }
 
 namespace {

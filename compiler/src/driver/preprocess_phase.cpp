@@ -205,13 +205,13 @@ void preprocess_task(const BuildContext& ctx, StageTask& t, FileHashes& file_has
   const CompileOptions& options = ctx.options;
   const ir::Program& program = *ctx.passes[t.pass].ir->program;
   Diagnostics ignored;  // the compile reports the same problems with more context
-  std::vector<std::string> included;
-  auto text = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, true, ctx.sources,
-                                      ignored, &included);
-  if (!text) return;
+  auto source = ctx.backend.source_text(ctx.shader, program, {.stage = t.stage, .keywords = t.keywords},
+                                        options.backend, ctx.sources, ignored);
+  if (!source) return;
+  const std::vector<std::string>& included = source->included_files;
   t.preprocessed = true;
   t.key_from_manifest = false;
-  std::string tokens = token_text(*text, options.backend.debug_info);
+  std::string tokens = token_text(source->text, options.backend.debug_info);
   // Stage relevance: only what this stage's entry point reaches counts
   // (GLSL programs are already split per stage by #ifdef VERTEX/FRAGMENT;
   // with -g the module embeds the whole source, so all of it counts).
@@ -243,11 +243,12 @@ PreprocessCounters preprocess_tasks(const BuildContext& ctx, Plan& plan) {
     if (store) {
       // Direct mode: the text before preprocessing and the files it read last time.
       Diagnostics ignored;
-      auto assembled = ctx.backend.source_text(ctx.shader, program, t.stage, t.keywords, options.backend, false,
-                                               ctx.sources, ignored);
+      auto assembled = ctx.backend.source_text(ctx.shader, program,
+                                               {.stage = t.stage, .keywords = t.keywords, .preprocess = false},
+                                               options.backend, ctx.sources, ignored);
       const std::string context = key_context(ctx.shader, program, t.stage, options.backend);
       if (assembled) {
-        t.manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), *assembled);
+        t.manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), assembled->text);
       }
       std::vector<std::string> found;
       bool hit = assembled && key_from_manifest(ctx, t, file_hashes, found);

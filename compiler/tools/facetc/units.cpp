@@ -58,17 +58,18 @@ Result<std::vector<Unit>> collect_units(const FacetcArgs& args, const Compiler& 
 }
 
 // The text of one unit, or nullopt with diagnostics.
-std::optional<std::string> unit_text(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader,
+std::optional<std::string> unit_text(const FacetcArgs& args, const backend::Backend& backend, const ir::Shader& shader,
                                      const Unit& unit, SourceMap& sources, Diagnostics& diags) {
   const ir::Program& program = *unit.pass->ir->program;
   const backend::BackendOptions& options = args.backend;
   if (args.mode == Mode::preprocess || (args.mode == Mode::emit && args.emit == EmitKind::source)) {
     bool preprocess = args.mode == Mode::preprocess;
-    auto text = compiler.backend().source_text(shader, program, unit.stage, unit.keywords, options, preprocess,
-                                               sources, diags);
-    return text ? std::optional(*text) : std::nullopt;
+    auto source = backend.source_text(shader, program,
+                                      {.stage = unit.stage, .keywords = unit.keywords, .preprocess = preprocess},
+                                      options, sources, diags);
+    return source ? std::optional(std::move(source->text)) : std::nullopt;
   }
-  auto compiled = compiler.backend().compile(shader, program, unit.stage, unit.keywords, options, sources, diags);
+  auto compiled = backend.compile(shader, program, unit.stage, unit.keywords, options, sources, diags);
   if (!compiled) return std::nullopt;
   if (args.mode == Mode::reflect) return reflection_to_json_text(compiled->reflection, -1);
   switch (args.emit) {
@@ -148,9 +149,10 @@ Result<UnitsOutput> produce_units(const FacetcArgs& args, const Compiler& compil
   std::vector<Diagnostics> per_unit;
   std::vector<std::string> texts;
   bool failed = false;
+  const backend::Backend backend;  // one stage of one variant at a time, outside a build
   for (const Unit& unit : *units) {
     Diagnostics unit_diags;
-    std::optional<std::string> text = unit_text(args, compiler, shader, unit, sources, unit_diags);
+    std::optional<std::string> text = unit_text(args, backend, shader, unit, sources, unit_diags);
     for (Diagnostic& d : unit_diags.mutable_all()) {
       if (d.severity != Severity::note) d.note({}, "while compiling " + unit.label);
     }

@@ -300,8 +300,10 @@ TEST_F(BackendCompileTest, HlslProgramHasNoImplicitIncludes) {
                                       "float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n"
                                       "float4 frag() : SV_Target { return fixed4(1, 0, 0, 1); }\n"
                                       "ENDHLSL\n} } }\n");
-  auto text = backend_.source_text(t.shader, t.program, Stage::fragment, {}, {}, false, t.sources, diags_);
-  ASSERT_TRUE(text);
+  auto source = backend_.source_text(t.shader, t.program, {.stage = Stage::fragment, .preprocess = false}, {},
+                                     t.sources, diags_);
+  ASSERT_TRUE(source);
+  const std::string* text = &source->text;
   EXPECT_EQ(text->find("HLSLSupport.cginc"), std::string::npos) << *text;
   // `fixed4` comes from HLSLSupport.cginc, which HLSLPROGRAM does not include.
   EXPECT_FALSE(compile(t, Stage::fragment));
@@ -393,17 +395,22 @@ TEST_F(BackendCompileTest, SourceTextHasPreludeDefinesAndLineMarkers) {
   TestShader t = load_shader("unlit.shader");
   BackendOptions options;
   options.defines = {{"MY_DEFINE", "3"}, {"FLAG", ""}};
-  auto text = backend_.source_text(t.shader, t.program, Stage::fragment, {"FOG_LINEAR"}, options, false, t.sources,
-                                   diags_);
-  ASSERT_TRUE(text);
+  auto source = backend_.source_text(t.shader, t.program,
+                                     {.stage = Stage::fragment, .keywords = {"FOG_LINEAR"}, .preprocess = false},
+                                     options, t.sources, diags_);
+  ASSERT_TRUE(source);
+  const std::string* text = &source->text;
   for (const char* expected : {"#define SHADER_STAGE_FRAGMENT 1", "#define SHADER_TARGET 25",
                                "#define SHADER_API_VULKAN 1", "#define FOG_LINEAR 1", "#define MY_DEFINE 3",
                                "#define FLAG 1", "#include <HLSLSupport.cginc>", "#line 14 \""}) {
     EXPECT_NE(text->find(expected), std::string::npos) << expected << "\n" << *text;
   }
-  auto preprocessed = backend_.source_text(t.shader, t.program, Stage::fragment, {"FOG_LINEAR"}, options, true,
-                                           t.sources, diags_);
-  ASSERT_TRUE(preprocessed) << diagnostics(t);
+  auto preprocessed_source = backend_.source_text(t.shader, t.program,
+                                                  {.stage = Stage::fragment, .keywords = {"FOG_LINEAR"}}, options,
+                                                  t.sources, diags_);
+  ASSERT_TRUE(preprocessed_source) << diagnostics(t);
+  const std::string* preprocessed = &preprocessed_source->text;
+  EXPECT_FALSE(preprocessed_source->included_files.empty()) << "the preprocessed text lists the files it read";
   EXPECT_NE(preprocessed->find("fogCoord"), std::string::npos);
   EXPECT_EQ(preprocessed->find("UNITY_FOG_COORDS"), std::string::npos);
 }

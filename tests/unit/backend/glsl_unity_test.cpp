@@ -69,8 +69,8 @@ class GlslUnityTest : public ::testing::Test {
     return backend_.compile(t.shader, t.program, stage, keywords, {}, t.sources, diags_);
   }
   std::string text(TestShader& t, Stage stage) {
-    auto s = backend_.source_text(t.shader, t.program, stage, {}, {}, false, t.sources, diags_);
-    return s ? *s : std::string();
+    auto s = backend_.source_text(t.shader, t.program, {.stage = stage, .preprocess = false}, {}, t.sources, diags_);
+    return s ? s->text : std::string();
   }
   std::string diagnostics(const TestShader& t) const { return render_text(diags_, t.sources); }
 

@@ -177,11 +177,12 @@ TEST_P(DriverStageRelevanceTest, DedupedProgramsEqualTheirOwnCompiles) {
   auto passes = compiler.select_passes(*shader, options, diags);
   ASSERT_TRUE(passes);
   const package::Package& pkg = compiled->package;
+  const backend::Backend backend;
   for (size_t p = 0; p < passes->size(); ++p) {
     const SelectedPass& sel = (*passes)[p];
     for (const package::PackageVariant& variant : pkg.passes[p].variants) {
       for (const package::PackageStage& stage : variant.stages) {
-        auto alone = compiler.backend().compile(*shader, *sel.ir->program, stage.stage,
+        auto alone = backend.compile(*shader, *sel.ir->program, stage.stage,
                                                 variants::stage_keywords(sel.keywords, variant.key, stage.stage),
                                                 options.backend, sources, diags);
         ASSERT_TRUE(alone);
