@@ -118,7 +118,7 @@ std::optional<NaivePlan> plan_naive(const Options& o, const fs::path& shader_pat
   for (const facet::SelectedPass& pass : *passes) {
     auto set = compiler.select_variants(pass, {}, diags);
     if (!set) return std::nullopt;
-    const facet::ir::Program& program = *pass.ir->program;
+    const facet::ir::Program& program = *pass.ir.program;
     std::map<facet::Stage, fs::path> sources_of;
     for (facet::Stage stage : {facet::Stage::vertex, facet::Stage::fragment}) {
       auto source = backend.source_text(*shader, program, {.stage = stage, .preprocess = false}, {}, sources, diags);

@@ -32,7 +32,7 @@ int compile_file(const std::string& path, const std::vector<std::string>& keywor
   std::cout << "shader '" << shader->name << "': " << passes->size() << " pass(es)\n";
   for (const facet::SelectedPass& pass : *passes) {
     auto counts = facet::variants::count_variants(pass.keywords);
-    std::cout << "  pass " << pass.pass << " '" << pass.ir->name << "' LightMode=" << pass.ir->tag("LightMode")
+    std::cout << "  pass " << pass.pass << " '" << pass.ir.name << "' LightMode=" << pass.ir.tag("LightMode")
               << ": " << counts.full << " variants\n";
   }
 

@@ -152,7 +152,7 @@ struct CompiledShader {
 struct SelectedPass {
   size_t subshader = 0;
   size_t pass = 0;
-  const ir::Pass* ir = nullptr;  // points into the ir::Shader it was selected from
+  ir::Pass ir;  // the pass compiled: the selected pass, or the one its UsePass names
   variants::KeywordSpace keywords;
 };
 

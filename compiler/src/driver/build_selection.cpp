@@ -91,7 +91,7 @@ Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shad
       failed = true;
       continue;
     }
-    selected.push_back({sub_index, i, source, std::move(*space)});
+    selected.push_back({sub_index, i, *source, std::move(*space)});
   }
   if (failed) return failure("bad keyword pragmas");
   if (selected.empty() && !options.passes.empty()) {
@@ -119,8 +119,8 @@ std::vector<variants::VariantKey> surviving(const SelectedPass& pass, std::vecto
   std::vector<variants::VariantKey> out;
   for (variants::VariantKey& key : keys) {
     std::vector<std::string> keywords = variants::all_keywords(pass.keywords, key);
-    bool keep = !variants::strip_reason(pass.keywords, keywords, options.strip, pass.ir->name, pass.pass);
-    if (keep && options.variant_filter) keep = options.variant_filter({*pass.ir, pass.pass, keywords});
+    bool keep = !variants::strip_reason(pass.keywords, keywords, options.strip, pass.ir.name, pass.pass);
+    if (keep && options.variant_filter) keep = options.variant_filter({pass.ir, pass.pass, keywords});
     if (keep) out.push_back(std::move(key));
   }
   stripped += keys.size() - out.size();

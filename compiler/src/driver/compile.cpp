@@ -125,7 +125,7 @@ std::vector<size_t> stage_tasks(const BuildContext& ctx, const Plan& plan) {
     for (const variants::VariantKey& key : plan.variant_sets[p].keys) {
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
-        if (!sel.ir->program->has_stage(stage)) continue;
+        if (!sel.ir.program->has_stage(stage)) continue;
         size_t task = plan.task_of.at(std::make_tuple(p, stage, variants::project(sel.keywords, key, stage)));
         out.push_back(plan.tasks[task].compiled_by);
       }
@@ -149,9 +149,9 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
   for (size_t p = 0; p < ctx.passes.size(); ++p) {
     const SelectedPass& sel = ctx.passes[p];
     const ir::Pass& written = ctx.shader.subshaders[sel.subshader].passes[sel.pass];
-    package::PackagePass pp{.name = sel.ir->name, .tags = sel.ir->tags, .state = written.state,
+    package::PackagePass pp{.name = sel.ir.name, .tags = sel.ir.tags, .state = written.state,
                             .keywords = sel.keywords};
-    if (written.kind == ir::PassKind::use_pass) pp.state = sel.ir->state;
+    if (written.kind == ir::PassKind::use_pass) pp.state = sel.ir.state;
     std::vector<Diagnostics> per_variant;
     for (const variants::VariantKey& key : plan.variant_sets[p].keys) {
       Diagnostics variant_diags;
@@ -159,7 +159,7 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
       bool variant_ok = true;
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
-        if (!sel.ir->program->has_stage(stage)) continue;
+        if (!sel.ir.program->has_stage(stage)) continue;
         size_t by = by_of_stage[next_stage++];
         StageEntry& e = plan.tasks[by].entry;
         variant_diags.append(e.diags);
@@ -225,7 +225,7 @@ Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOp
   auto passes = select_passes(shader, options, diags);
   FACET_TRY(passes);
   auto pass = std::find_if(passes->begin(), passes->end(), [&](const SelectedPass& p) { return p.pass == job.pass; });
-  if (pass == passes->end() || !pass->ir->program->has_stage(job.stage)) {
+  if (pass == passes->end() || !pass->ir.program->has_stage(job.stage)) {
     diags.add(DiagId::driver_no_such_pass, {},
               fmt::format("the job names pass {} and the {} stage, which this shader does not have", job.pass,
                           stage_name(job.stage)));

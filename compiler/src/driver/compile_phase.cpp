@@ -84,9 +84,9 @@ CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::ve
         return;
       }
     }
-    auto compiled = ctx.backend.compile(ctx.shader, *sel.ir->program, t.stage, t.keywords, options.backend,
+    auto compiled = ctx.backend.compile(ctx.shader, *sel.ir.program, t.stage, t.keywords, options.backend,
                                         ctx.sources, e.diags);
-    add_variant_context(e.diags, pass_label(*sel.ir, sel.pass), t.stage, t.keywords);
+    add_variant_context(e.diags, pass_label(sel.ir, sel.pass), t.stage, t.keywords);
     e.seconds = elapsed();
     if (!compiled) return;
     e.ok = true;

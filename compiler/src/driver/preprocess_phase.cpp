@@ -127,7 +127,7 @@ std::string hex_key(const std::string& context, const std::string& tokens) {
 Plan plan_tasks(const std::vector<SelectedPass>& passes, std::vector<variants::VariantSet> variant_sets) {
   Plan plan;
   for (size_t p = 0; p < passes.size(); ++p) {
-    const ir::Program& program = *passes[p].ir->program;
+    const ir::Program& program = *passes[p].ir.program;
     for (const variants::VariantKey& key : variant_sets[p].keys) {
       for (int s = 0; s < kStageCount; ++s) {
         Stage stage = Stage(s);
@@ -151,7 +151,7 @@ size_t assign_compilers(const std::vector<SelectedPass>& passes, std::vector<Sta
   size_t compiling = 0;
   for (size_t i = 0; i < tasks.size(); ++i) {
     StageTask& t = tasks[i];
-    const ir::Program& program = *passes[t.pass].ir->program;
+    const ir::Program& program = *passes[t.pass].ir.program;
     if (!t.preprocessed) {
       t.compiled_by = i;  // its preprocessing failed: compile it alone for the full diagnostics
       ++compiling;
@@ -203,7 +203,7 @@ bool key_from_manifest(const BuildContext& ctx, StageTask& t, FileHashes& file_h
 // include manifest (under t.manifest_key).
 void preprocess_task(const BuildContext& ctx, StageTask& t, FileHashes& file_hashes) {
   const CompileOptions& options = ctx.options;
-  const ir::Program& program = *ctx.passes[t.pass].ir->program;
+  const ir::Program& program = *ctx.passes[t.pass].ir.program;
   Diagnostics ignored;  // the compile reports the same problems with more context
   auto source = ctx.backend.source_text(ctx.shader, program, {.stage = t.stage, .keywords = t.keywords},
                                         options.backend, ctx.sources, ignored);
@@ -239,7 +239,7 @@ PreprocessCounters preprocess_tasks(const BuildContext& ctx, Plan& plan) {
   std::vector<std::string> problems;
   parallel_for_each(plan.tasks.size(), ctx.jobs, [&](size_t i) {
     StageTask& t = plan.tasks[i];
-    const ir::Program& program = *ctx.passes[t.pass].ir->program;
+    const ir::Program& program = *ctx.passes[t.pass].ir.program;
     if (store) {
       // Direct mode: the text before preprocessing and the files it read last time.
       Diagnostics ignored;

@@ -92,12 +92,12 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
   const package::Package& pkg = compiled.package;
   for (uint32_t p = 0; p < passes.size() && p < pkg.passes.size(); ++p) {
     const SelectedPass& sel = passes[p];
-    PassReport pr{.index = uint32_t(sel.pass), .name = sel.ir->name, .light_mode = sel.ir->tag("LightMode")};
+    PassReport pr{.index = uint32_t(sel.pass), .name = sel.ir.name, .light_mode = sel.ir.tag("LightMode")};
     pr.ladders.push_back(count_ladder(sel, std::nullopt, options, compiled.programs, p, pkg.passes[p]));
-    for (Stage s : program_stages(*sel.ir->program)) {
+    for (Stage s : program_stages(*sel.ir.program)) {
       pr.ladders.push_back(count_ladder(sel, s, options, compiled.programs, p, pkg.passes[p]));
     }
-    pr.sets = set_rows(sel.keywords, *sel.ir->program);
+    pr.sets = set_rows(sel.keywords, *sel.ir.program);
     pr.unreachable_keywords = sel.keywords.unreachable_keywords;
     pr.variants = variant_rows(sel, pkg.passes[p], pkg, compiled.programs, p);
     std::set<uint32_t> blobs;

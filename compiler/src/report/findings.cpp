@@ -139,7 +139,7 @@ std::optional<bool> free_in_stage(const variants::KeywordSet& set, const std::st
 std::vector<Finding> keyword_findings(const ir::Shader& shader, const SelectedPass& pass,
                                       const CompiledShader& compiled, const SourceMap& sources, uint32_t pass_index) {
   (void)shader;
-  const ir::Program& program = *pass.ir->program;
+  const ir::Program& program = *pass.ir.program;
   Directives user, all;
   for (const ir::SourceChunk& chunk : program.includes) scan_directives(chunk.text, user);
   scan_directives(program.body.text, user);
@@ -318,7 +318,7 @@ std::vector<WhatIf> counted_what_ifs(const SelectedPass& pass, const ReportOptio
                                      double seconds_per_program) {
   std::set<Stage> all_stages, other_than_fragment;
   for (int s = 0; s < kStageCount; ++s) {
-    if (!pass.ir->program->has_stage(Stage(s))) continue;
+    if (!pass.ir.program->has_stage(Stage(s))) continue;
     all_stages.insert(Stage(s));
     if (Stage(s) != Stage::fragment) other_than_fragment.insert(Stage(s));
   }

@@ -76,10 +76,10 @@ Result<std::string> keyword_spaces(const FacetcArgs& args, const Compiler& compi
   for (const SelectedPass& pass : *passes) {
     variants::DumpOptions options{.stages = 0, .list_variants = list};
     for (int s = 0; s < kStageCount; ++s) {
-      if (pass.ir->program->has_stage(Stage(s))) options.stages |= stage_bit(Stage(s));
+      if (pass.ir.program->has_stage(Stage(s))) options.stages |= stage_bit(Stage(s));
     }
     if (args.stage) options.stages &= stage_bit(*args.stage);
-    out += pass_header(*pass.ir, pass.pass);
+    out += pass_header(pass.ir, pass.pass);
     out += variants::dump_keyword_space(pass.keywords, options);
   }
   return out;

@@ -18,8 +18,8 @@ struct Unit {
 };
 
 std::string describe_pass(const SelectedPass& pass) {
-  std::string name = pass.ir->name.empty() ? "" : fmt::format(" '{}'", pass.ir->name);
-  std::string light_mode = pass.ir->tag("LightMode");
+  std::string name = pass.ir.name.empty() ? "" : fmt::format(" '{}'", pass.ir.name);
+  std::string light_mode = pass.ir.tag("LightMode");
   return fmt::format("pass #{}{}{}", pass.pass, name, light_mode.empty() ? "" : " (" + light_mode + ")");
 }
 
@@ -44,7 +44,7 @@ Result<std::vector<Unit>> collect_units(const FacetcArgs& args, const Compiler& 
       continue;
     }
     for (const variants::VariantKey& key : set->keys) {
-      for (Stage stage : stages_of(*pass.ir->program, args.stage)) {
+      for (Stage stage : stages_of(*pass.ir.program, args.stage)) {
         auto keywords = variants::stage_keywords(pass.keywords, key, stage);
         std::string label = fmt::format("{}, {} stage, keywords {{{}}}", describe_pass(pass), stage_name(stage),
                                         keywords.empty() ? "none" : fmt::format("{}", fmt::join(keywords, " ")));
@@ -60,7 +60,7 @@ Result<std::vector<Unit>> collect_units(const FacetcArgs& args, const Compiler& 
 // The text of one unit, or nullopt with diagnostics.
 std::optional<std::string> unit_text(const FacetcArgs& args, const backend::Backend& backend, const ir::Shader& shader,
                                      const Unit& unit, SourceMap& sources, Diagnostics& diags) {
-  const ir::Program& program = *unit.pass->ir->program;
+  const ir::Program& program = *unit.pass->ir.program;
   const backend::BackendOptions& options = args.backend;
   if (args.mode == Mode::preprocess || (args.mode == Mode::emit && args.emit == EmitKind::source)) {
     bool preprocess = args.mode == Mode::preprocess;
@@ -95,7 +95,7 @@ std::string reflection_document(const std::vector<Unit>& units, const std::vecto
   nlohmann::json doc = nlohmann::json::array();
   for (size_t i = 0; i < units.size(); ++i) {
     const Unit& u = units[i];
-    doc.push_back({{"pass", u.pass->ir->name}, {"pass_index", u.pass->pass}, {"stage", stage_name(u.stage)},
+    doc.push_back({{"pass", u.pass->ir.name}, {"pass_index", u.pass->pass}, {"stage", stage_name(u.stage)},
                    {"keywords", u.keywords}, {"reflection", nlohmann::json::parse(texts[i])}});
   }
   return doc.dump(2) + "\n";

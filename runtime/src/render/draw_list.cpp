@@ -18,7 +18,7 @@ std::string light_description(const Scene& scene, size_t i) {
 }
 
 DrawRecord pass_record(const ObjectState& object, size_t p) {
-  const ir::Pass& pass = *object.shader->passes[p].ir;
+  const ir::Pass& pass = object.shader->passes[p].ir;
   DrawRecord record;
   record.object = object.scene->name.empty() ? object.scene->json_path
                                              : fmt::format("{} ({})", object.scene->json_path, object.scene->name);
@@ -104,7 +104,7 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
     ++out.variants_compiled;
     out.compiled.push_back(fmt::format("{} {}: {}", asset.shader.name, record.pass, join((*variant)->keywords)));
   }
-  Result<PipelineState, StateError> state = resolve_state(pass.ir->state, object.material);
+  Result<PipelineState, StateError> state = resolve_state(pass.ir.state, object.material);
   if (!state) return unexpected(RenderError{fmt::format("{}: {}", where, state.error().message)});
   Draw draw;
   draw.object = object.index;
@@ -151,9 +151,9 @@ struct Builder {
     std::vector<std::string> fog = fog_keywords(scene);
     std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
     bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
-                                      [](const SelectedPass& p) { return forward_mode(*p.ir); });
+                                      [](const SelectedPass& p) { return forward_mode(p.ir); });
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
-      const ir::Pass& pass = *object.shader->passes[p].ir;
+      const ir::Pass& pass = object.shader->passes[p].ir;
       DrawRecord record = pass_record(object, p);
       std::string why;
       Role role = role_of(pass, forward_shader, why);

@@ -48,8 +48,8 @@ DrawRecord step_record(const PostChain& chain, size_t i, size_t pass_index) {
   r.object = fmt::format("{} (image effect)", s.scene->json_path);
   r.object_index = i;
   r.shader = s.shader->shader.name;
-  r.pass = pass.ir->name.empty() ? std::to_string(pass.pass) : fmt::format("{} {}", pass.pass, pass.ir->name);
-  r.light_mode = pass.ir->tag("LightMode");
+  r.pass = pass.ir.name.empty() ? std::to_string(pass.pass) : fmt::format("{} {}", pass.pass, pass.ir.name);
+  r.light_mode = pass.ir.tag("LightMode");
   r.queue = s.queue;
   r.why = fmt::format("image effect step {}: the {} image bound as _MainTex", i + 1,
                       i == 0 ? "camera's" : "previous step's");

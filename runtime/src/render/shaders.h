@@ -26,7 +26,7 @@ struct ShaderAsset {
   std::string path;
   SourceMap sources;
   ir::Shader shader;
-  std::vector<SelectedPass> passes;  // of the SubShader in use; point into `shader`
+  std::vector<SelectedPass> passes;  // of the SubShader in use
   int queue = 2000;                  // the SubShader's render queue (sema resolves its Queue tag)
   std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<LoadedVariant>> variants;
 };

@@ -128,7 +128,7 @@ Result<DrawListResult, RenderError> caster_draws(const Context& context, const S
     if (object.background || !include(object)) continue;
     bool cast = false;
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
-      if (!iequals(object.shader->passes[p].ir->tag("LightMode"), "ShadowCaster")) continue;
+      if (!iequals(object.shader->passes[p].ir.tag("LightMode"), "ShadowCaster")) continue;
       DrawRecord record = pass_record(object, p);
       record.light = light_text;
       record.why = "ShadowCaster: depth into " + target;

@@ -182,7 +182,7 @@ TEST_P(DriverStageRelevanceTest, DedupedProgramsEqualTheirOwnCompiles) {
     const SelectedPass& sel = (*passes)[p];
     for (const package::PackageVariant& variant : pkg.passes[p].variants) {
       for (const package::PackageStage& stage : variant.stages) {
-        auto alone = backend.compile(*shader, *sel.ir->program, stage.stage,
+        auto alone = backend.compile(*shader, *sel.ir.program, stage.stage,
                                                 variants::stage_keywords(sel.keywords, variant.key, stage.stage),
                                                 options.backend, sources, diags);
         ASSERT_TRUE(alone);

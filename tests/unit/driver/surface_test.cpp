@@ -41,7 +41,7 @@ std::vector<std::string> pass_summary(const Compiler& compiler, const ir::Shader
   std::vector<std::string> out;
   if (!passes) return out;
   for (const SelectedPass& p : *passes) {
-    std::string line = p.ir->name + ":" + p.ir->tag("LightMode") + "[";
+    std::string line = p.ir.name + ":" + p.ir.tag("LightMode") + "[";
     std::vector<std::string> pragmas;
     for (const variants::KeywordSet& set : p.keywords.sets) {
       if (pragmas.empty() || pragmas.back() != set.pragma) pragmas.push_back(set.pragma);
