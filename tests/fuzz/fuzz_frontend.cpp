@@ -1,7 +1,7 @@
 // Arbitrary bytes as a .shader file through the whole front end: loading
 // (parse, sema, surface-shader lowering), pass and variant selection, and
 // glslang's preprocessing of every stage program, which is what decides the
-// distinct programs of a build (Compiler::program_jobs). Nothing is compiled
+// distinct programs of a build (program_jobs, facet/build_farm.h). Nothing is compiled
 // to SPIR-V. #include reads regular files only: the shader is named inside
 // the target's empty temporary folder, so relative includes find nothing
 // but the stdlib.
@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   SourceMap sources;
   Diagnostics diags;
   auto shader = compiler().load_source(path, std::string(fuzz::as_text(data, size)), sources, diags, options.backend);
-  if (shader) (void)compiler().program_jobs(*shader, options, sources, diags);
+  if (shader) (void)program_jobs(compiler(), *shader, options, sources, diags);
   (void)render_text(diags, sources);
   return 0;
 }

@@ -140,7 +140,7 @@ struct CompiledShader {
   std::vector<std::string> dependencies;  // the .shader and every included file, sorted
   CompileStats stats;
   std::vector<ProgramRecord> programs;    // in pass, then first-use order
-  // What Compiler::estimate would have said before this build, worked out
+  // What estimate_build would have said before this build, worked out
   // from the build's own preprocessing time and the compile times of the
   // same evenly spread sample (so a report shows the estimate beside the
   // result without preprocessing twice). nullopt: every program came from
@@ -185,28 +185,9 @@ class Compiler {
   Result<CompiledShader> compile(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
                                  Diagnostics& diags) const;
 
-  // The distinct stage programs compile(shader, options) would compile, as
-  // (pass index in the SubShader, stage, keywords the stage sees), in plan
-  // order: one build-farm job each (facetc --emit-jobs).
-  struct ProgramJob {
-    size_t pass = 0;
-    Stage stage = Stage::vertex;
-    std::vector<std::string> keywords;
-  };
-  Result<std::vector<ProgramJob>> program_jobs(const ir::Shader& shader, const CompileOptions& options,
-                                               SourceMap& sources, Diagnostics& diags) const;
-  // Compiles the one program `job` names into the cache of `options`
-  // (cache_dir and/or cache_url must be set), for a farm worker. Returns
-  // whether it was compiled (false: it was already in the cache).
-  Result<bool> compile_program(const ir::Shader& shader, const CompileOptions& options, const ProgramJob& job,
-                               SourceMap& sources, Diagnostics& diags) const;
-
-  // The cost of compile(shader, options) without compiling it all: see
-  // BuildEstimate. The cache is not used, so the estimate is of a cold build.
-  Result<BuildEstimate> estimate(const ir::Shader& shader, const CompileOptions& options, SourceMap& sources,
-                                 Diagnostics& diags, size_t sample = kEstimateSample) const;
 
  private:
+  friend struct CompilerInternals;  // the build-farm calls of facet/build_farm.h
   backend::Backend backend_;
 };
 

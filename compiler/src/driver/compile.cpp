@@ -14,6 +14,7 @@
 #include <set>
 
 #include "build_plan.h"
+#include "facet/build_farm.h"
 
 namespace facet {
 
@@ -195,15 +196,20 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
 
 }  // namespace
 
-Result<std::vector<Compiler::ProgramJob>> Compiler::program_jobs(const ir::Shader& shader,
-                                                                 const CompileOptions& options, SourceMap& sources,
-                                                                 Diagnostics& diags) const {
-  auto passes = select_passes(shader, options, diags);
+// What the build-farm calls need of a Compiler beyond its public calls.
+struct CompilerInternals {
+  static const backend::Backend& backend(const Compiler& compiler) { return compiler.backend_; }
+};
+
+Result<std::vector<ProgramJob>> program_jobs(const Compiler& compiler, const ir::Shader& shader,
+                                             const CompileOptions& options, SourceMap& sources, Diagnostics& diags) {
+  auto passes = compiler.select_passes(shader, options, diags);
   FACET_TRY(passes);
-  auto sets = select_variant_sets(*this, *passes, options, diags);
+  auto sets = select_variant_sets(compiler, *passes, options, diags);
   FACET_TRY(sets);
   const cache::CacheStores no_cache;
-  const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
+  const BuildContext ctx{shader, options, sources, CompilerInternals::backend(compiler), *passes, no_cache,
+                         driver::worker_count(options.jobs)};
   Plan plan = driver::plan_tasks(*passes, std::move(*sets));
   driver::preprocess_tasks(ctx, plan);
   driver::assign_compilers(*passes, plan.tasks);
@@ -215,14 +221,14 @@ Result<std::vector<Compiler::ProgramJob>> Compiler::program_jobs(const ir::Shade
   return jobs;
 }
 
-Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOptions& options, const ProgramJob& job,
-                                       SourceMap& sources, Diagnostics& diags) const {
+Result<bool> compile_program(const Compiler& compiler, const ir::Shader& shader, const CompileOptions& options,
+                             const ProgramJob& job, SourceMap& sources, Diagnostics& diags) {
   const cache::CacheStores stores = cache_stores(options);
   if (!stores.any()) {
     diags.add(DiagId::driver_bad_option, {}, "a program job compiles into the cache: give --cache-dir or --remote-cache");
     return failure("no cache");
   }
-  auto passes = select_passes(shader, options, diags);
+  auto passes = compiler.select_passes(shader, options, diags);
   FACET_TRY(passes);
   auto pass = std::find_if(passes->begin(), passes->end(), [&](const SelectedPass& p) { return p.pass == job.pass; });
   if (pass == passes->end() || !pass->ir.program->has_stage(job.stage)) {
@@ -232,7 +238,7 @@ Result<bool> Compiler::compile_program(const ir::Shader& shader, const CompileOp
     return failure("no such program");
   }
   std::vector<SelectedPass> one{*pass};
-  const BuildContext ctx{shader, options, sources, backend_, one, stores, 1};
+  const BuildContext ctx{shader, options, sources, CompilerInternals::backend(compiler), one, stores, 1};
   Plan plan;
   plan.variant_sets.resize(1);
   plan.tasks.push_back({.pass = 0, .stage = job.stage, .keywords = job.keywords});
@@ -265,7 +271,7 @@ void finish_estimate(BuildEstimate& e, const Plan& plan, const std::vector<size_
   e.estimated_seconds = e.preprocess_seconds + double(e.unique) * e.seconds_per_program / double(e.jobs);
 }
 
-// What Compiler::estimate would have said of this build, from the build's
+// What estimate_build would have said of this build, from the build's
 // own numbers: its preprocessing time and the same sample's compile times
 // (programs the cache served are no sample of a cold build; with every
 // program from the cache there is no estimate).
@@ -285,14 +291,15 @@ std::optional<BuildEstimate> estimate_of_build(const Plan& plan, const std::vect
 
 }  // namespace
 
-Result<BuildEstimate> Compiler::estimate(const ir::Shader& shader, const CompileOptions& options,
-                                        SourceMap& sources, Diagnostics& diags, size_t sample) const {
-  auto passes = select_passes(shader, options, diags);
+Result<BuildEstimate> estimate_build(const Compiler& compiler, const ir::Shader& shader, const CompileOptions& options,
+                                     SourceMap& sources, Diagnostics& diags, size_t sample) {
+  auto passes = compiler.select_passes(shader, options, diags);
   FACET_TRY(passes);
-  auto sets = select_variant_sets(*this, *passes, options, diags);
+  auto sets = select_variant_sets(compiler, *passes, options, diags);
   FACET_TRY(sets);
   const cache::CacheStores no_cache;
-  const BuildContext ctx{shader, options, sources, backend_, *passes, no_cache, driver::worker_count(options.jobs)};
+  const BuildContext ctx{shader, options, sources, CompilerInternals::backend(compiler), *passes, no_cache,
+                         driver::worker_count(options.jobs)};
   BuildEstimate e{.jobs = ctx.jobs};
   for (const variants::VariantSet& set : *sets) e.variants += set.keys.size();
   auto started = std::chrono::steady_clock::now();

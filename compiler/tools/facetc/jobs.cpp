@@ -45,23 +45,23 @@ std::string command_line(const std::vector<std::string>& argv) {
 }
 
 struct JobLine {
-  Compiler::ProgramJob job;
+  ProgramJob job;
   std::vector<std::string> argv;
   std::string stamp;
 };
 
 }  // namespace
 
-std::string program_job_spec(const Compiler::ProgramJob& job) {
+std::string program_job_spec(const ProgramJob& job) {
   std::string kw;
   for (const std::string& k : job.keywords) kw += (kw.empty() ? "" : ",") + k;
   return fmt::format("{}:{}:{}", job.pass, stage_name(job.stage), kw);
 }
 
-std::optional<Compiler::ProgramJob> parse_program_job(const std::string& spec) {
+std::optional<ProgramJob> parse_program_job(const std::string& spec) {
   size_t a = spec.find(':'), b = a == std::string::npos ? a : spec.find(':', a + 1);
   if (b == std::string::npos) return std::nullopt;
-  Compiler::ProgramJob job;
+  ProgramJob job;
   auto [end, ec] = std::from_chars(spec.data(), spec.data() + a, job.pass);
   if (ec != std::errc() || end != spec.data() + a) return std::nullopt;
   auto stage = parse_stage(spec.substr(a + 1, b - a - 1));
@@ -80,7 +80,7 @@ std::optional<Compiler::ProgramJob> parse_program_job(const std::string& spec) {
 Result<std::string> emit_jobs(const FacetcArgs& args, const Compiler& compiler, const ir::Shader& shader,
                               const std::string& input, const std::string& facetc_path, SourceMap& sources,
                               Diagnostics& diags) {
-  auto jobs = compiler.program_jobs(shader, compile_options(args, false), sources, diags);
+  auto jobs = program_jobs(compiler, shader, compile_options(args, false), sources, diags);
   FACET_TRY(jobs);
   namespace fs = std::filesystem;
   std::string package = fs::path(input).stem().string() + ".facetpkg";

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "args.h"
+#include "facet/build_farm.h"
 #include "facet/compiler.h"
 
 namespace facet::tools {
@@ -17,7 +18,7 @@ Result<std::string> emit_jobs(const FacetcArgs& args, const Compiler& compiler, 
                               Diagnostics& diags);
 
 // "PASS:STAGE:KW1,KW2" -> a job; nullopt when malformed.
-std::optional<Compiler::ProgramJob> parse_program_job(const std::string& spec);
-std::string program_job_spec(const Compiler::ProgramJob& job);
+std::optional<ProgramJob> parse_program_job(const std::string& spec);
+std::string program_job_spec(const ProgramJob& job);
 
 }  // namespace facet::tools

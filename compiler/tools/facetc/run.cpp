@@ -11,6 +11,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "facet/build_farm.h"
 #include "facet/compiler.h"
 #include "facet/package.h"
 #include "facet/sema.h"
@@ -274,13 +275,13 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
         diags.add(DiagId::driver_bad_option, {}, "--program takes PASS:STAGE:KEYWORDS, e.g. 0:fragment:FOG_LINEAR,_EMISSION");
         return Produced{.usage_error = true};
       }
-      auto compiled = compiler.compile_program(*shader, compile_options(args, false), *job, sources, diags);
+      auto compiled = compile_program(compiler, *shader, compile_options(args, false), *job, sources, diags);
       FACET_TRY(compiled);
       return Produced{.bytes = fmt::format("{} {}\n", program_job_spec(*job), *compiled ? "compiled" : "cached"),
                       .output = args.output};
     }
     case Mode::estimate: {
-      auto e = compiler.estimate(*shader, stripped_options(compile_options(args, false), strip, *shader), sources,
+      auto e = estimate_build(compiler, *shader, stripped_options(compile_options(args, false), strip, *shader), sources,
                                  diags);
       FACET_TRY(e);
       return Produced{.bytes = fmt::format("{}: {} variants, {} programs, {} to compile; ~{:.2f} s on {} threads "

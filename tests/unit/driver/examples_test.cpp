@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "facet/build_farm.h"
 #include "facet/compiler.h"
 
 namespace facet {
@@ -211,7 +212,7 @@ TEST(DriverEstimateTest, CountsTheBuildAndTimesASample) {
   Diagnostics diags;
   auto shader = compiler.load(example("Keywords.shader"), sources, diags);
   ASSERT_TRUE(shader);
-  auto e = compiler.estimate(*shader, {.jobs = 2}, sources, diags, 8);
+  auto e = estimate_build(compiler, *shader, {.jobs = 2}, sources, diags, 8);
   ASSERT_TRUE(e) << render_text(diags, sources);
   EXPECT_EQ(e->variants, 48u);
   EXPECT_EQ(e->programs, 64u);
@@ -219,7 +220,7 @@ TEST(DriverEstimateTest, CountsTheBuildAndTimesASample) {
   EXPECT_EQ(e->sampled, 8u);
   EXPECT_GT(e->seconds_per_program, 0);
   EXPECT_GT(e->estimated_seconds, e->preprocess_seconds);
-  auto all = compiler.estimate(*shader, {.jobs = 1}, sources, diags, 1000);
+  auto all = estimate_build(compiler, *shader, {.jobs = 1}, sources, diags, 1000);
   ASSERT_TRUE(all);
   EXPECT_EQ(all->sampled, 50u) << "a sample never exceeds the programs";
 }
