@@ -5,6 +5,7 @@
 // to SPIR-V. #include reads regular files only: the shader is named inside
 // the target's empty temporary folder, so relative includes find nothing
 // but the stdlib.
+#include "facet/build_farm.h"
 #include "facet/compiler.h"
 #include "fuzz_support.h"
 
@@ -34,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   SourceMap sources;
   Diagnostics diags;
   auto shader = compiler().load_source(path, std::string(fuzz::as_text(data, size)), sources, diags, options.backend);
-  if (shader) (void)program_jobs(compiler(), *shader, options, sources, diags);
+  if (shader) (void)facet::program_jobs(compiler(), *shader, options, sources, diags);
   (void)render_text(diags, sources);
   return 0;
 }
