@@ -30,7 +30,7 @@ CheckOptions options_for(const Model& m) { return {.bound = m.bound, .behind_giv
 std::vector<Point> grid_for(const Model& m, bool known_issue_points = false) {
   std::vector<Point> out;
   for (const Point& p : hard_case_grid())
-    if (bool(m.known_issue && m.known_issue(p.data())) == known_issue_points) out.push_back(p);
+    if (bool(m.known_issue && m.known_issue(unpack(p.data()))) == known_issue_points) out.push_back(p);
   return out;
 }
 

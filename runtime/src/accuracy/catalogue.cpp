@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string_view>
 
 #include "accuracy/lobe.h"
 #include "facet/reference/brdf.h"
 #include "facet/reference/color.h"
 #include "facet/reference/ibl.h"
+#include "facet/reference/models.h"
 #include "facet/reference/tonemap.h"
 #include "facet/reference/unity_standard.h"
 
@@ -254,23 +257,29 @@ void add_fresnel(std::vector<RowSpec>& out) {
                      }));
 }
 
-Lobe diffuse(std::function<double(const Angles&, const dvec3&, const dvec3&)> f) {
-  return [f](const dvec3& v, const dvec3& l) { return l.z <= 0 ? 0.0 : f(angles(v, l), v, l); };
+// A model of the lighting-model table (facet/reference/models.h) at the
+// given parameters, as the scalar lobe the integrals read (its red channel:
+// the rows below use white albedos and f0 = 1).
+Lobe model_lobe(std::string_view id, std::map<std::string, dvec3> params = {}) {
+  ref::LocalBrdf f = ref::model_brdf(id, params);
+  return [f](const dvec3& v, const dvec3& l) { return f(v, l).x; };
+}
+// Cook-Torrance GGX with F = 1 at alpha (the model's parameter is r = sqrt(alpha)).
+Lobe ggx_model_lobe(double alpha) {
+  return model_lobe("ggx", {{"roughness", dvec3(std::sqrt(alpha))}, {"f0", dvec3(1.0)}});
 }
 
 void add_diffuse(std::vector<RowSpec>& out) {
   out.push_back(spec("Fd_Lambert", "diffuse", "Lambert 1/pi", "albedo <= 1", "albedo excess over 1", "exactly 1",
                      kFacet, "value = FacetFd_Lambert() * p0;", [](StudyRow& r) {
-                       albedo_row(r, {{"", diffuse([](const Angles&, auto&, auto&) { return ref::FacetFd_Lambert(); })}});
+                       albedo_row(r, {{"", model_lobe("lambert")}});
                      }));
   out.push_back(spec("Fd_Burley", "diffuse", "Disney/Burley diffuse", "albedo <= 1", "albedo excess over 1",
                      "max albedo 1.519 (r=1, NoV=.02); r=.5: 1.005-1.026", kFacet,
                      "value = FacetFd_Burley(p0, p1, p3, p4);", [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double rough : {0.5, 1.0}) {
-                         s.push_back({fmt::format("r={}", rough), diffuse([rough](const Angles& a, auto&, auto&) {
-                                        return ref::FacetFd_Burley(a.NoV, a.NoL, a.LoH, rough);
-                                      })});
+                         s.push_back({fmt::format("r={}", rough), model_lobe("burley", {{"roughness", dvec3(rough)}})});
                        }
                        albedo_row(r, s);
                      }));
@@ -279,9 +288,9 @@ void add_diffuse(std::vector<RowSpec>& out) {
                      [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double alpha : {0.0, 0.5, 1.0}) {
-                         s.push_back({fmt::format("a={}", alpha), diffuse([alpha](const Angles& a, auto&, auto&) {
-                                        return ref::FacetFd_Frostbite(a.NoV, a.NoL, a.LoH, alpha);
-                                      })});
+                         // The model's parameter is r, alpha = r^2.
+                         s.push_back({fmt::format("a={}", alpha),
+                                      model_lobe("frostbite", {{"roughness", dvec3(std::sqrt(alpha))}})});
                        }
                        albedo_row(r, s);
                      }));
@@ -293,13 +302,9 @@ void add_diffuse(std::vector<RowSpec>& out) {
                      "value = FacetFd_OrenNayarQualitative(p0, p1, p3 * 2 - 1, p4);", [](StudyRow& r) {
                        std::vector<std::pair<std::string, std::pair<Lobe, Lobe>>> s;
                        for (double sigma : {0.25, 0.5, 1.0}) {
-                         Lobe q = diffuse([sigma](const Angles& a, const dvec3& v, const dvec3& l) {
-                           return ref::FacetFd_OrenNayarQualitative(a.NoV, a.NoL, glm::dot(l, v), sigma);
-                         });
-                         Lobe full = diffuse([sigma](const Angles& a, const dvec3& v, const dvec3& l) {
-                           return ref::FacetFd_OrenNayar(a.NoV, a.NoL, glm::dot(l, v), sigma, 1.0);
-                         });
-                         s.push_back({fmt::format("sigma={}", sigma), {q, full}});
+                         s.push_back({fmt::format("sigma={}", sigma),
+                                      {model_lobe("oren-nayar-qualitative", {{"sigma", dvec3(sigma)}}),
+                                       model_lobe("oren-nayar", {{"sigma", dvec3(sigma)}})}});
                        }
                        lobe_metrics(r, s);
                      }));
@@ -311,11 +316,7 @@ void add_specular(std::vector<RowSpec>& out) {
                      [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double n : {10.0, 100.0}) {
-                         s.push_back({fmt::format("n={}", n), [n](const dvec3& v, const dvec3& l) {
-                                        if (l.z <= 0) return 0.0;
-                                        dvec3 refl = glm::reflect(-l, kN);
-                                        return ref::FacetPhongNormalized(glm::dot(refl, v), n);
-                                      }});
+                         s.push_back({fmt::format("n={}", n), model_lobe("phong", {{"exponent", dvec3(n)}})});
                        }
                        albedo_row(r, s);
                      }));
@@ -324,9 +325,7 @@ void add_specular(std::vector<RowSpec>& out) {
                      "value = FacetBlinnPhongNormalized(p2, p4 * 100);", [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double n : {10.0, 100.0}) {
-                         s.push_back({fmt::format("n={}", n), [n](const dvec3& v, const dvec3& l) {
-                                        return l.z <= 0 ? 0.0 : ref::FacetBlinnPhongNormalized(angles(v, l).NoH, n);
-                                      }});
+                         s.push_back({fmt::format("n={}", n), model_lobe("blinn-phong", {{"exponent", dvec3(n)}})});
                        }
                        albedo_row(r, s);
                      }));
@@ -335,11 +334,8 @@ void add_specular(std::vector<RowSpec>& out) {
                      "value = FacetSpecular_Ward(p0, p1, p2, p6 * 0.5, p7 * 0.5, p4 * 0.5, p4 * 0.5);", [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double a : {0.1, 0.3, 0.5}) {
-                         s.push_back({fmt::format("a={}", a), [a](const dvec3& v, const dvec3& l) {
-                                        if (l.z <= 0) return 0.0;
-                                        dvec3 h = glm::normalize(v + l);
-                                        return ref::FacetSpecular_Ward(v.z, l.z, h.z, h.x, h.y, a, a);
-                                      }});
+                         s.push_back({fmt::format("a={}", a),
+                                      model_lobe("ward", {{"alpha_x", dvec3(a)}, {"alpha_y", dvec3(a)}})});
                        }
                        albedo_row(r, s, true);
                      }));
@@ -349,12 +345,10 @@ void add_specular(std::vector<RowSpec>& out) {
                      [](StudyRow& r) {
                        std::vector<std::pair<std::string, Lobe>> s;
                        for (double n : {10.0, 100.0}) {
-                         s.push_back({fmt::format("n={}", n), [n](const dvec3& v, const dvec3& l) {
-                                        if (l.z <= 0) return 0.0;
-                                        dvec3 h = glm::normalize(v + l);
-                                        return ref::FacetSpecular_AshikhminShirley(v.z, l.z, h.z, glm::dot(h, v), h.x,
-                                                                                   h.y, n, n, 1.0);
-                                      }});
+                         // Rs = 1 leaves no diffuse lobe (its weight is 1 - Rs).
+                         s.push_back({fmt::format("n={}", n),
+                                      model_lobe("ashikhmin-shirley", {{"nu", dvec3(n)}, {"nv", dvec3(n)},
+                                                                       {"rs", dvec3(1.0)}, {"rd", dvec3(0.0)}})});
                        }
                        albedo_row(r, s, true);
                      }));
@@ -366,7 +360,7 @@ void add_specular(std::vector<RowSpec>& out) {
                      [](StudyRow& r) {
                        std::string detail;
                        for (double alpha : {0.25, 0.5, 1.0}) {
-                         Lobe f = ggx_lobe(alpha, ref::FacetV_SmithGGXCorrelated);
+                         Lobe f = ggx_model_lobe(alpha);
                          double e_avg = 0;
                          const int n = 16;
                          for (int i = 0; i < n; ++i) {  // E_avg = 2 int E(mu) mu dmu, midpoint rule
@@ -386,7 +380,7 @@ void add_specular(std::vector<RowSpec>& out) {
                        double worst = 0;
                        for (double alpha : {0.1, 0.5, 1.0}) {
                          for (double NoV : {1.0, 0.5, 0.2, 0.05}) {
-                           Lobe f = ggx_lobe(alpha, ref::FacetV_SmithGGXCorrelated);
+                           Lobe f = ggx_model_lobe(alpha);
                            double e = albedo(f, view_at(NoV));
                            double E = ref::FacetDFG_Integrate(NoV, alpha, 4096).y;
                            double compensated = e * ref::FacetEnergyCompensation(dvec3(1), E).x;
@@ -398,15 +392,11 @@ void add_specular(std::vector<RowSpec>& out) {
                      }));
 }
 
-// Unity's tiers return pi * f * NoL for a white light with no indirect light;
-// the reference lobe is D_GGX * V_correlated with F = 1 (specColor = 1).
+// Unity's tiers for a white light with no indirect light and spec colour 1
+// (metallic 1, white albedo); the reference lobe is D_GGX * V_correlated with F = 1.
 Lobe unity_lobe(int tier, double smoothness) {
-  return [tier, smoothness](const dvec3& v, const dvec3& l) {
-    if (l.z <= 0) return 0.0;
-    u::UnityLight light{dvec3(1), l, l.z};
-    dvec4 c = u::UNITY_BRDF_PBS(tier, dvec3(0), dvec3(1), 0.0, smoothness, kN, v, light, u::UnityIndirect{});
-    return c.x / (M_PI * l.z);
-  };
+  return model_lobe("unity-brdf" + std::to_string(tier),
+                    {{"albedo", dvec3(1.0)}, {"metallic", dvec3(1.0)}, {"smoothness", dvec3(smoothness)}});
 }
 
 void add_standard(std::vector<RowSpec>& out) {

@@ -27,6 +27,9 @@ struct FunctionCase {
 
 std::vector<FunctionCase> facet_model_cases();      // A: facet's lighting library (reference/cases/facet_cases.cpp)
 std::vector<FunctionCase> unity_standard_cases();   // C: Unity-named functions, BRDF1/2/3 etc. (reference/cases/unity_cases.cpp)
-std::vector<FunctionCase> lighting_cases();         // both, concatenated (reference/cases/cases.cpp)
+// B: each row of the lighting-model table with HLSL (facet/reference/models.h), the
+// whole model against its twin (reference/cases/model_cases.cpp).
+std::vector<FunctionCase> lighting_model_cases();
+std::vector<FunctionCase> lighting_cases();         // A, C and B, concatenated (reference/cases/cases.cpp)
 
 }  // namespace facet::reference
