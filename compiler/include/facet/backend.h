@@ -14,6 +14,7 @@
 #include "facet/compiled_variant.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
+#include "facet/program_analysis.h"
 #include "facet/reflection.h"
 #include "facet/result.h"
 #include "facet/source.h"
@@ -128,6 +129,15 @@ class Backend {
 // diagnostics name the line of `source` (as "<compute>:N") or of the include.
 Result<std::vector<uint32_t>> compile_hlsl_compute(const std::string& source, const std::string& entry,
                                                    const BackendOptions& options, Diagnostics& diags);
+
+// Parses `program` as its fragment stage would be parsed (prelude, includes,
+// `keywords` and `extra_defines` defined) and reads the AST
+// (facet/program_analysis.h); nothing is compiled to SPIR-V. Parse errors are
+// reported at .shader positions. Call while a Backend exists (it owns
+// glslang's process initialisation).
+Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
+                                        const std::vector<std::string>& keywords, const BackendOptions& options,
+                                        SourceMap& sources, Diagnostics& diags);
 
 // The stdlib folder used when BackendOptions::stdlib_dir is empty: $FACET_STDLIB_DIR,
 // else the source tree's stdlib/ (a build tree), else the installed one.

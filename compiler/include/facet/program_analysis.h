@@ -1,8 +1,10 @@
-// What an HLSL program's code declares and touches, read from glslang's AST:
-// its functions, their parameters, and which members of each struct
-// parameter a function reads and writes. Surface-shader lowering uses it to
-// learn which Input fields `surf` reads and which outputs it writes, and
-// which form a lighting function has, from the code rather than by guessing.
+// What an HLSL program's code declares and touches: its functions, their
+// parameters, and which members of each struct parameter a function reads and
+// writes. The backend reads it from glslang's AST (backend::analyze_program,
+// facet/backend.h); surface-shader lowering consumes it to learn which Input
+// fields `surf` reads and which outputs it writes, and which form a lighting
+// function has, from the code rather than by guessing. Plain data, so that
+// the consumer needs no HLSL parser of its own.
 #pragma once
 
 #include <map>
@@ -10,9 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "facet/backend.h"
-
-namespace facet::backend {
+namespace facet {
 
 struct AnalyzedField {
   std::string name;
@@ -50,12 +50,4 @@ struct ProgramAnalysis {
   const std::vector<AnalyzedField>* find_struct(std::string_view name) const;
 };
 
-// Parses `program` as its fragment stage would be parsed (prelude, includes,
-// `keywords` and `extra_defines` defined) and reads the AST; nothing is
-// compiled to SPIR-V. Parse errors are reported at .shader positions. Call
-// while a Backend exists (it owns glslang's process initialisation).
-Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
-                                        const std::vector<std::string>& keywords, const BackendOptions& options,
-                                        SourceMap& sources, Diagnostics& diags);
-
-}  // namespace facet::backend
+}  // namespace facet

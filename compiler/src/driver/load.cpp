@@ -1,5 +1,6 @@
 // Compiler::load*: text in, validated ShaderIr out.
 #include "files.h"
+#include "facet/backend.h"
 #include "facet/compiler.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
@@ -21,7 +22,10 @@ Result<ir::Shader> Compiler::load_source(const std::string& path, std::string te
   FACET_TRY(ast);
   auto shader = sema::analyze(*ast, sources, {}, diags);
   FACET_TRY(shader);
-  auto lowered = surface::lower_surface_shaders(*shader, surface_options, sources, diags);
+  auto analyze = [&surface_options](const ir::Shader& s, const ir::Program& program, SourceMap& sm, Diagnostics& d) {
+    return backend::analyze_program(s, program, {}, surface_options, sm, d);
+  };
+  auto lowered = surface::lower_surface_shaders(*shader, analyze, sources, diags);
   FACET_TRY(lowered);
   return shader;
 }

@@ -161,13 +161,13 @@ class Writer {
   void tessellation() {
     const std::string& in = s_.vertex_input;
     const std::string cp = "InternalTessInterp_" + in;
-    auto carried = [](const backend::AnalyzedField& f) { return !f.semantic.starts_with("SV_"); };
+    auto carried = [](const AnalyzedField& f) { return !f.semantic.starts_with("SV_"); };
     line("struct UnityTessellationFactors {");
     line("  float edge[3] : SV_TessFactor;");
     line("  float inside : SV_InsideTessFactor;");
     line("};");
     line(fmt::format("struct {} {{", cp));
-    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+    for (const AnalyzedField& f : s_.vertex_fields) {
       if (!carried(f)) continue;
       // POSITION between stages would be the clip position; Unity's name.
       bool position = f.semantic == "POSITION" || f.semantic.empty();
@@ -176,7 +176,7 @@ class Writer {
     line("};");
     line(fmt::format("{} tessvert_surf({} v) {{", cp, in));
     line(fmt::format("  {} o;", cp));
-    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+    for (const AnalyzedField& f : s_.vertex_fields) {
       if (carried(f)) line(fmt::format("  o.{0} = v.{0};", f.name));
     }
     line("  return o;");
@@ -187,7 +187,7 @@ class Writer {
       line(fmt::format("  {} vi[3];", in));
       line("  for (int i = 0; i < 3; ++i) {");
       line(fmt::format("    UNITY_INITIALIZE_OUTPUT({}, vi[i]);", in));
-      for (const backend::AnalyzedField& f : s_.vertex_fields) {
+      for (const AnalyzedField& f : s_.vertex_fields) {
         if (carried(f)) line(fmt::format("    vi[i].{0} = v[i].{0};", f.name));
       }
       line("  }");
@@ -215,7 +215,7 @@ class Writer {
                      cp));
     line(fmt::format("  {} v;", in));
     line(fmt::format("  UNITY_INITIALIZE_OUTPUT({}, v);", in));
-    for (const backend::AnalyzedField& f : s_.vertex_fields) {
+    for (const AnalyzedField& f : s_.vertex_fields) {
       if (carried(f)) line(fmt::format("  v.{0} = vi[0].{0} * bary.x + vi[1].{0} * bary.y + vi[2].{0} * bary.z;", f.name));
     }
     if (!d_.tess_phong.empty()) {

@@ -1,6 +1,7 @@
 // The HLSL Unity would generate around a surface shader, per pass.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "directive.h"

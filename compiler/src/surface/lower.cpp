@@ -178,7 +178,7 @@ bool declares(const ir::Program& program, const std::string& name) {
 // `first`: the SubShader's first surface program, the one that stands in
 // for the Fallback's shadow caster (one ShadowCaster pass is enough).
 Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubShader& sub, const ir::Program& user,
-                                        const std::string& tag, bool first, const backend::BackendOptions& options,
+                                        const std::string& tag, bool first, const ProgramAnalyzer& analyze,
                                         SourceMap& sources, Diagnostics& diags) {
   const ir::Pragma* p = surface_pragma(user);
   if (!p) FACET_ICE("a surface program without '#pragma surface'");
@@ -188,14 +188,13 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
   const std::string base = shader.file != kNoFile ? sources.path(shader.file) : std::string("<shader>");
   GeneratedFile probe = add_generated_file(fmt::format("{} [surface analysis{}]", base, tag),
                                            {analysis_prologue(), ""}, sources);
-  backend::BackendOptions analysis_options = options;
-  auto analysis = backend::analyze_program(shader, wrap(user, probe, {}), {}, analysis_options, sources, diags);
+  auto analysis = analyze(shader, wrap(user, probe, {}), sources, diags);
   FACET_TRY(analysis);
   auto shape = read_shape(*analysis, *directive, diags);
   FACET_TRY(shape);
   std::vector<std::string> output_fields;
   if (const auto* fields = analysis->find_struct(shape->output_struct)) {
-    for (const backend::AnalyzedField& f : *fields) output_fields.push_back(f.name);
+    for (const AnalyzedField& f : *fields) output_fields.push_back(f.name);
   }
 
   std::vector<ir::Pass> out;
@@ -219,7 +218,7 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
 
 }  // namespace
 
-Result<void> lower_surface_shaders(ir::Shader& shader, const backend::BackendOptions& options, SourceMap& sources,
+Result<void> lower_surface_shaders(ir::Shader& shader, const ProgramAnalyzer& analyze, SourceMap& sources,
                                    Diagnostics& diags) {
   bool failed = false;
   for (size_t i = 0; i < shader.subshaders.size(); ++i) {
@@ -231,7 +230,7 @@ Result<void> lower_surface_shaders(ir::Shader& shader, const backend::BackendOpt
       const ir::SurfaceProgram& sp = sub.surface_programs[k];
       std::string tag = (i ? fmt::format(" SubShader {}", i) : std::string()) +
                         (sub.surface_programs.size() > 1 ? fmt::format(" #{}", k + 1) : std::string());
-      auto passes = lower_one(shader, sub, sp.program, tag, k == 0, options, sources, diags);
+      auto passes = lower_one(shader, sub, sp.program, tag, k == 0, analyze, sources, diags);
       if (!passes) {
         failed = true;
         continue;

@@ -5,7 +5,7 @@
 namespace facet::surface {
 namespace {
 
-InputField classify(const backend::AnalyzedField& f) {
+InputField classify(const AnalyzedField& f) {
   InputField in{.name = f.name, .type = f.type};
   auto is = [&](std::string_view n) { return f.name == n; };
   // Unity's rule: "uv" + the texture's name, which starts with '_'
@@ -36,9 +36,9 @@ InputField classify(const backend::AnalyzedField& f) {
   return in;
 }
 
-const backend::AnalyzedFunction* require(const backend::ProgramAnalysis& analysis, const std::string& name,
+const AnalyzedFunction* require(const ProgramAnalysis& analysis, const std::string& name,
                                          const char* role, const Directive& d, Diagnostics& diags) {
-  const backend::AnalyzedFunction* f = analysis.find(name);
+  const AnalyzedFunction* f = analysis.find(name);
   if (!f) {
     diags.add(DiagId::surface_missing_function, d.span, fmt::format("{} '{}' is not defined", role, name));
   }
@@ -50,9 +50,9 @@ bool signature_error(const Directive& d, Diagnostics& diags, std::string message
   return false;
 }
 
-bool read_lighting(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+bool read_lighting(const ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
   const std::string name = "Lighting" + d.model;
-  const backend::AnalyzedFunction* f = require(analysis, name, "the lighting function", d, diags);
+  const AnalyzedFunction* f = require(analysis, name, "the lighting function", d, diags);
   if (!f) return false;
   const auto& p = f->params;
   const char* forms = "forms: (s, UnityGI gi), (s, half3 viewDir, UnityGI gi), (s, half3 lightDir, half atten), "
@@ -84,9 +84,9 @@ bool read_lighting(const backend::ProgramAnalysis& analysis, const Directive& d,
   return true;
 }
 
-bool read_vertex_modifier(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+bool read_vertex_modifier(const ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
   if (d.vertex_function.empty()) return true;
-  const backend::AnalyzedFunction* f = require(analysis, d.vertex_function, "the vertex modifier", d, diags);
+  const AnalyzedFunction* f = require(analysis, d.vertex_function, "the vertex modifier", d, diags);
   if (!f) return false;
   const auto& p = f->params;
   if (d.tessellated() && (p.size() != 1 || !p[0].is_struct || !p[0].is_out)) {
@@ -111,15 +111,15 @@ bool read_vertex_modifier(const backend::ProgramAnalysis& analysis, const Direct
 // appdata_full's members, for a tessellated shader whose code names the
 // struct in no function (no vertex modifier, a tessellate function without
 // parameters).
-std::vector<backend::AnalyzedField> appdata_full_fields() {
+std::vector<AnalyzedField> appdata_full_fields() {
   return {{"vertex", "float4", "POSITION"},   {"tangent", "float4", "TANGENT"},
           {"normal", "float3", "NORMAL"},     {"texcoord", "float4", "TEXCOORD0"},
           {"texcoord1", "float4", "TEXCOORD1"}, {"texcoord2", "float4", "TEXCOORD2"},
           {"texcoord3", "float4", "TEXCOORD3"}, {"color", "float4", "COLOR"}};
 }
 
-bool has_field(const std::vector<backend::AnalyzedField>& fields, std::string_view name) {
-  for (const backend::AnalyzedField& f : fields) {
+bool has_field(const std::vector<AnalyzedField>& fields, std::string_view name) {
+  for (const AnalyzedField& f : fields) {
     if (f.name == name) return true;
   }
   return false;
@@ -128,9 +128,9 @@ bool has_field(const std::vector<backend::AnalyzedField>& fields, std::string_vi
 // tessellate:fn is `float4 fn()` (fixed factors) or `float4 fn(appdata v0,
 // appdata v1, appdata v2)`, appdata being the vertex modifier's struct (or,
 // without one, the vertex input); it may return a single float for all four.
-bool read_tessellation(const backend::ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
+bool read_tessellation(const ProgramAnalysis& analysis, const Directive& d, Shape& s, Diagnostics& diags) {
   if (!d.tessellated()) return true;
-  const backend::AnalyzedFunction* f = require(analysis, d.tessellate_function, "the tessellation function", d, diags);
+  const AnalyzedFunction* f = require(analysis, d.tessellate_function, "the tessellation function", d, diags);
   if (!f) return false;
   const auto& p = f->params;
   auto expected = [&] {
@@ -171,9 +171,9 @@ bool read_tessellation(const backend::ProgramAnalysis& analysis, const Directive
 
 }  // namespace
 
-Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directive& d, Diagnostics& diags) {
+Result<Shape> read_shape(const ProgramAnalysis& analysis, const Directive& d, Diagnostics& diags) {
   Shape s;
-  const backend::AnalyzedFunction* surf = require(analysis, d.surface_function, "the surface function", d, diags);
+  const AnalyzedFunction* surf = require(analysis, d.surface_function, "the surface function", d, diags);
   if (!surf) return failure("no surface function");
   if (surf->params.size() != 2 || !surf->params[0].is_struct || !surf->params[1].is_struct || !surf->params[1].is_out) {
     signature_error(d, diags, fmt::format("surface function '{}' has the wrong parameters", d.surface_function),
@@ -183,18 +183,18 @@ Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directi
   }
   s.input_struct = surf->params[0].type;
   s.output_struct = surf->params[1].type;
-  const backend::AnalyzedParam& in = surf->params[0];
-  const backend::AnalyzedParam& out = surf->params[1];
+  const AnalyzedParam& in = surf->params[0];
+  const AnalyzedParam& out = surf->params[1];
   s.writes_normal = out.writes("Normal");
   s.writes_emission = out.writes("Emission");
   s.writes_alpha = out.writes("Alpha");
-  const backend::AnalyzedFunction* final_color = nullptr;
+  const AnalyzedFunction* final_color = nullptr;
   if (!d.final_color_function.empty()) {
     final_color = require(analysis, d.final_color_function, "the final colour function", d, diags);
     if (!final_color) return failure("no finalcolor");
   }
   if (const auto* fields = analysis.find_struct(s.input_struct)) {
-    for (const backend::AnalyzedField& f : *fields) {
+    for (const AnalyzedField& f : *fields) {
       InputField field = classify(f);
       field.used = in.reads(f.name) ||
                    (final_color && !final_color->params.empty() && final_color->params[0].reads(f.name));
@@ -203,7 +203,7 @@ Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directi
     }
   }
   if (const auto* fields = analysis.find_struct(s.output_struct)) {
-    for (const backend::AnalyzedField& f : *fields) s.output_has_occlusion = s.output_has_occlusion || f.name == "Occlusion";
+    for (const AnalyzedField& f : *fields) s.output_has_occlusion = s.output_has_occlusion || f.name == "Occlusion";
   }
   if (!read_lighting(analysis, d, s, diags) || !read_vertex_modifier(analysis, d, s, diags) ||
       !read_tessellation(analysis, d, s, diags)) {

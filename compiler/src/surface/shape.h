@@ -47,10 +47,10 @@ struct Shape {
   bool output_has_occlusion = false;
   // tessellate:fn: the vertex input's members (what the hull and domain
   // stages carry) and whether fn takes the patch's three vertices.
-  std::vector<backend::AnalyzedField> vertex_fields;
+  std::vector<AnalyzedField> vertex_fields;
   bool tessellate_takes_vertices = false;
 };
 
-Result<Shape> read_shape(const backend::ProgramAnalysis& analysis, const Directive& directive, Diagnostics& diags);
+Result<Shape> read_shape(const ProgramAnalysis& analysis, const Directive& directive, Diagnostics& diags);
 
 }  // namespace facet::surface
