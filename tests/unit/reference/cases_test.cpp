@@ -1,6 +1,7 @@
 // The case table itself: well formed, deterministic, finite on its own
 // points, and covering every function of facet's lighting library.
 #include "facet/reference/cases.h"
+#include "facet/reference/models.h"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +17,22 @@ namespace {
 
 constexpr uint32_t kPoints = 4096;
 
-TEST(ReferenceCasesTest, LightingCasesHoldFacetAndUnityCases) {
-  EXPECT_EQ(lighting_cases().size(), facet_model_cases().size() + unity_standard_cases().size());
+TEST(ReferenceCasesTest, LightingCasesHoldFacetUnityAndModelCases) {
+  EXPECT_EQ(lighting_cases().size(),
+            facet_model_cases().size() + unity_standard_cases().size() + lighting_model_cases().size());
+}
+
+// The model cases are read from the model table: one per row with HLSL.
+TEST(ReferenceCasesTest, EveryModelTableRowWithHlslHasOneCase) {
+  std::set<std::string> functions;
+  for (const FunctionCase& c : lighting_model_cases()) EXPECT_TRUE(functions.insert(c.function).second) << c.function;
+  size_t rows = 0;
+  for (const LightingModel& m : lighting_models()) {
+    if (m.hlsl.empty()) continue;
+    ++rows;
+    EXPECT_TRUE(functions.count("model " + m.id)) << m.id;
+  }
+  EXPECT_EQ(functions.size(), rows);
 }
 
 TEST(ReferenceCasesTest, FacetCasesAreWellFormedAndUniquelyNamed) {
@@ -34,7 +49,9 @@ TEST(ReferenceCasesTest, FacetCasesAreWellFormedAndUniquelyNamed) {
 }
 
 TEST(ReferenceCasesTest, SamplersAreDeterministicAndTwinsFiniteOnEveryPoint) {
-  for (const FunctionCase& c : facet_model_cases()) {
+  std::vector<FunctionCase> checked = facet_model_cases();
+  for (FunctionCase& c : lighting_model_cases()) checked.push_back(std::move(c));
+  for (const FunctionCase& c : checked) {
     SCOPED_TRACE(c.function + " / " + c.setting);
     for (uint32_t i = 0; i < kPoints; ++i) {
       float a[16], b[16];
