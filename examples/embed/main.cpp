@@ -16,36 +16,36 @@ namespace {
 
 int compile_file(const std::string& path, const std::vector<std::string>& keywords) {
   facet::Compiler compiler;
-  facet::SourceMap sources;
-  facet::Diagnostics diags;
-  auto shader = compiler.load(path, sources, diags);
-  if (!shader) {
-    std::cerr << facet::render_text(diags, sources);
-    return 1;
-  }
   facet::CompileOptions options{.keywords = keywords};
-  auto passes = compiler.select_passes(*shader, options, diags);
-  if (!passes) {
-    std::cerr << facet::render_text(diags, sources);
+  // The results own their messages and the source map they point into.
+  facet::LoadResult loaded = compiler.open_file(path, options);
+  if (!loaded.ok()) {
+    std::cerr << loaded.messages();
     return 1;
   }
-  std::cout << "shader '" << shader->name << "': " << passes->size() << " pass(es)\n";
+  auto passes = compiler.select_passes(*loaded.shader, options, loaded.diagnostics);
+  if (!passes) {
+    std::cerr << loaded.messages();
+    return 1;
+  }
+  std::cout << "shader '" << loaded.shader->name << "': " << passes->size() << " pass(es)\n";
   for (const facet::SelectedPass& pass : *passes) {
     auto counts = facet::variants::count_variants(pass.keywords);
     std::cout << "  pass " << pass.pass << " '" << pass.ir.name << "' LightMode=" << pass.ir.tag("LightMode")
               << ": " << counts.full << " variants\n";
   }
 
-  auto compiled = compiler.compile(*shader, options, sources, diags);
-  std::cerr << facet::render_text(diags, sources);  // warnings survive a success
-  if (!compiled) return 1;
-  for (const facet::package::PackagePass& pass : compiled->package.passes) {
+  facet::BuildResult built = compiler.build(std::move(loaded), options);
+  std::cerr << built.messages();  // warnings survive a success
+  if (!built.ok()) return 1;
+  const facet::CompiledShader& compiled = *built.compiled;
+  for (const facet::package::PackagePass& pass : compiled.package.passes) {
     for (const facet::package::PackageVariant& variant : pass.variants) {
       std::cout << "  variant of '" << pass.name << "' with {";
       for (const std::string& k : variant.keywords) std::cout << " " << k;
       std::cout << " }\n";
       for (const facet::package::PackageStage& stage : variant.stages) {
-        const auto& spirv = compiled->package.spirv_blobs[stage.blob];
+        const auto& spirv = compiled.package.spirv_blobs[stage.blob];
         std::cout << "    " << facet::stage_name(stage.stage) << ": " << spirv.size() << " SPIR-V words\n";
         for (const facet::UniformBlock& block : stage.reflection.uniform_blocks) {
           std::cout << "      block " << block.name << " set " << block.set << " binding " << block.binding
@@ -55,11 +55,11 @@ int compile_file(const std::string& path, const std::vector<std::string>& keywor
     }
   }
 
-  std::vector<uint8_t> bytes = facet::package::write_package(compiled->package);
+  std::vector<uint8_t> bytes = facet::package::write_package(compiled.package);
   facet::Diagnostics read_diags;
   auto back = facet::package::read_package(bytes, read_diags);
   if (!back) {
-    std::cerr << facet::render_text(read_diags, sources);
+    std::cerr << facet::render_text(read_diags, built.sources);
     return 1;
   }
   std::cout << "package: " << bytes.size() << " bytes, " << back->spirv_blobs.size()
@@ -71,10 +71,15 @@ int compile_file(const std::string& path, const std::vector<std::string>& keywor
 int compile_in_memory() {
   const std::map<std::string, std::string> assets = {
       {"engine/Tint.hlsl", "float4 _Tint;\nfloat4 tint(float4 c) { return c * _Tint; }\n"}};
+  facet::CompileOptions options;
+  options.backend.resolver = [&](const std::string& requested,
+                                 const std::string&) -> std::optional<facet::backend::IncludedFile> {
+    auto it = assets.find(requested);
+    if (it == assets.end()) return std::nullopt;
+    return facet::backend::IncludedFile{it->first, it->second};
+  };
   facet::Compiler compiler;
-  facet::SourceMap sources;
-  facet::Diagnostics diags;
-  auto shader = compiler.load_source("memory/Tinted.shader", R"(Shader "Engine/Tinted" {
+  facet::BuildResult built = compiler.build_source("memory/Tinted.shader", R"(Shader "Engine/Tinted" {
   SubShader { Pass {
     CGPROGRAM
     #pragma vertex vert
@@ -84,22 +89,10 @@ int compile_in_memory() {
     float4 frag() : SV_Target { return tint(float4(1, 1, 1, 1)); }
     ENDCG
   } }
-})", sources, diags);
-  if (!shader) {
-    std::cerr << facet::render_text(diags, sources);
-    return 1;
-  }
-  facet::CompileOptions options;
-  options.backend.resolver = [&](const std::string& requested,
-                                 const std::string&) -> std::optional<facet::backend::IncludedFile> {
-    auto it = assets.find(requested);
-    if (it == assets.end()) return std::nullopt;
-    return facet::backend::IncludedFile{it->first, it->second};
-  };
-  auto compiled = compiler.compile(*shader, options, sources, diags);
-  std::cerr << facet::render_text(diags, sources);
-  if (!compiled) return 1;
-  const auto& fragment = compiled->package.passes.at(0).variants.at(0).stages.at(1).reflection;
+})", options);
+  std::cerr << built.messages();
+  if (!built.ok()) return 1;
+  const auto& fragment = built.compiled->package.passes.at(0).variants.at(0).stages.at(1).reflection;
   for (const facet::UniformBlock& block : fragment.uniform_blocks) {
     for (const facet::BlockMember& member : block.members) {
       std::cout << "in-memory shader: " << block.name << "." << member.name << " at offset " << member.offset

@@ -156,9 +156,48 @@ struct SelectedPass {
   variants::KeywordSpace keywords;
 };
 
+// A loaded shader with the messages of loading and the source map they point
+// into: what Compiler::open_file/open_source return, so that nothing has to
+// be threaded through the calls. `shader` is empty when loading failed.
+struct LoadResult {
+  std::optional<ir::Shader> shader;
+  SourceMap sources;
+  Diagnostics diagnostics;
+
+  bool ok() const { return shader.has_value(); }
+  // The messages as facetc prints them (file:line:col, the line, a caret, notes).
+  std::string messages(const RenderOptions& options = {}) const;
+};
+
+// The outcome of a whole build: the package when it succeeded, and always the
+// messages of loading and compiling with their source map (warnings come
+// with a success). Compare shaderc's CompilationResult.
+struct BuildResult {
+  std::optional<CompiledShader> compiled;
+  SourceMap sources;
+  Diagnostics diagnostics;
+
+  bool ok() const { return compiled.has_value(); }
+  std::string messages(const RenderOptions& options = {}) const;
+  std::string messages_json() const;  // as facetc --diagnostics-format=json
+};
+
 class Compiler {
  public:
   Compiler() = default;
+
+  // ---- one call each: the results own their messages ----
+  // Loads a file (or an in-memory text that `path` names) with the include
+  // paths and defines of `options.backend`.
+  LoadResult open_file(const std::string& path, const CompileOptions& options = {}) const;
+  LoadResult open_source(const std::string& path, std::string text, const CompileOptions& options = {}) const;
+  // Compiles what open_* loaded; the load's messages come first.
+  BuildResult build(LoadResult loaded, const CompileOptions& options = {}) const;
+  // open_file + build.
+  BuildResult build_file(const std::string& path, const CompileOptions& options = {}) const;
+  BuildResult build_source(const std::string& path, std::string text, const CompileOptions& options = {}) const;
+
+  // ---- the steps, for tools that keep one SourceMap and Diagnostics across calls ----
 
   // Reads and parses a file. Refuses binary files and files over 64 MiB.
   // Surface shaders are lowered into their generated passes here (facet/surface.h);
