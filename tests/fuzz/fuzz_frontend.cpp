@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = fuzz::TempDir::get().file("fuzz.shader");
   SourceMap sources;
   Diagnostics diags;
-  auto shader = compiler().load_source(path, std::string(fuzz::as_text(data, size)), sources, diags, options.backend);
+  auto shader = compiler().load_source(path, std::string(fuzz::as_text(data, size)), sources, diags, options);
   if (shader) (void)facet::program_jobs(compiler(), *shader, options, sources, diags);
   (void)render_text(diags, sources);
   return 0;

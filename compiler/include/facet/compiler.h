@@ -159,7 +159,7 @@ struct SelectedPass {
 // A loaded shader with the messages of loading and the source map they point
 // into: what Compiler::open_file/open_source return, so that nothing has to
 // be threaded through the calls. `shader` is empty when loading failed.
-struct LoadResult {
+struct OpenedShader {
   std::optional<ir::Shader> shader;
   SourceMap sources;
   Diagnostics diagnostics;
@@ -189,10 +189,10 @@ class Compiler {
   // ---- one call each: the results own their messages ----
   // Loads a file (or an in-memory text that `path` names) with the include
   // paths and defines of `options.backend`.
-  LoadResult open_file(const std::string& path, const CompileOptions& options = {}) const;
-  LoadResult open_source(const std::string& path, std::string text, const CompileOptions& options = {}) const;
+  OpenedShader open_file(const std::string& path, const CompileOptions& options = {}) const;
+  OpenedShader open_source(const std::string& path, std::string text, const CompileOptions& options = {}) const;
   // Compiles what open_* loaded; the load's messages come first.
-  BuildResult build(LoadResult loaded, const CompileOptions& options = {}) const;
+  BuildResult build(OpenedShader loaded, const CompileOptions& options = {}) const;
   // open_file + build.
   BuildResult build_file(const std::string& path, const CompileOptions& options = {}) const;
   BuildResult build_source(const std::string& path, std::string text, const CompileOptions& options = {}) const;
@@ -201,13 +201,13 @@ class Compiler {
 
   // Reads and parses a file. Refuses binary files and files over 64 MiB.
   // Surface shaders are lowered into their generated passes here (facet/surface.h);
-  // `surface_options` gives the include paths and defines their code is read with.
+  // `options.backend` gives the include paths and defines their code is read with.
   Result<ir::Shader> load(const std::string& path, SourceMap& sources, Diagnostics& diags,
-                          const backend::BackendOptions& surface_options = {}) const;
+                          const CompileOptions& options = {}) const;
   // Parses an in-memory text; `path` names it in diagnostics and anchors
   // relative #includes.
   Result<ir::Shader> load_source(const std::string& path, std::string text, SourceMap& sources, Diagnostics& diags,
-                                 const backend::BackendOptions& surface_options = {}) const;
+                                 const CompileOptions& options = {}) const;
 
   // The passes `options.passes` names (all by default) of the SubShader in
   // use, with their keyword spaces.

@@ -4,7 +4,7 @@
 
 namespace facet {
 
-std::string LoadResult::messages(const RenderOptions& options) const { return render_text(diagnostics, sources, options); }
+std::string OpenedShader::messages(const RenderOptions& options) const { return render_text(diagnostics, sources, options); }
 
 std::string BuildResult::messages(const RenderOptions& options) const {
   return render_text(diagnostics, sources, options);
@@ -12,21 +12,21 @@ std::string BuildResult::messages(const RenderOptions& options) const {
 
 std::string BuildResult::messages_json() const { return render_json(diagnostics, sources); }
 
-LoadResult Compiler::open_file(const std::string& path, const CompileOptions& options) const {
-  LoadResult r;
-  auto shader = load(path, r.sources, r.diagnostics, options.backend);
+OpenedShader Compiler::open_file(const std::string& path, const CompileOptions& options) const {
+  OpenedShader r;
+  auto shader = load(path, r.sources, r.diagnostics, options);
   if (shader) r.shader = std::move(*shader);
   return r;
 }
 
-LoadResult Compiler::open_source(const std::string& path, std::string text, const CompileOptions& options) const {
-  LoadResult r;
-  auto shader = load_source(path, std::move(text), r.sources, r.diagnostics, options.backend);
+OpenedShader Compiler::open_source(const std::string& path, std::string text, const CompileOptions& options) const {
+  OpenedShader r;
+  auto shader = load_source(path, std::move(text), r.sources, r.diagnostics, options);
   if (shader) r.shader = std::move(*shader);
   return r;
 }
 
-BuildResult Compiler::build(LoadResult loaded, const CompileOptions& options) const {
+BuildResult Compiler::build(OpenedShader loaded, const CompileOptions& options) const {
   BuildResult r;
   r.sources = std::move(loaded.sources);
   r.diagnostics = std::move(loaded.diagnostics);

@@ -9,21 +9,21 @@
 namespace facet {
 
 Result<ir::Shader> Compiler::load(const std::string& path, SourceMap& sources, Diagnostics& diags,
-                                  const backend::BackendOptions& surface_options) const {
+                                  const CompileOptions& options) const {
   auto text = read_text_file(path, kMaxShaderBytes, diags);
   FACET_TRY(text);
-  return load_source(path, std::move(*text), sources, diags, surface_options);
+  return load_source(path, std::move(*text), sources, diags, options);
 }
 
 Result<ir::Shader> Compiler::load_source(const std::string& path, std::string text, SourceMap& sources,
-                                         Diagnostics& diags, const backend::BackendOptions& surface_options) const {
+                                         Diagnostics& diags, const CompileOptions& options) const {
   FileId file = sources.add_file(path, std::move(text));
   auto ast = shaderlab::parse(file, sources, {}, diags);
   FACET_TRY(ast);
   auto shader = sema::analyze(*ast, sources, {}, diags);
   FACET_TRY(shader);
-  auto analyze = [&surface_options](const ir::Shader& s, const ir::Program& program, SourceMap& sm, Diagnostics& d) {
-    return backend::analyze_program(s, program, {}, surface_options, sm, d);
+  auto analyze = [&options](const ir::Shader& s, const ir::Program& program, SourceMap& sm, Diagnostics& d) {
+    return backend::analyze_program(s, program, {}, options.backend, sm, d);
   };
   auto lowered = surface::lower_surface_shaders(*shader, analyze, sources, diags);
   FACET_TRY(lowered);

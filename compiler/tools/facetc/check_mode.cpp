@@ -71,7 +71,7 @@ Checked check_one(const FacetcArgs& args, const Compiler& compiler, const StripI
   // A linter over a whole project reports a shader that crashes the compiler
   // as failing rather than ending the run.
   try {
-    auto shader = compiler.load(path, sources, raw, args.backend);
+    auto shader = compiler.load(path, sources, raw, compile_options(args, false));
     if (shader) {
       auto result = compiler.compile(*shader, check_options(args, strip, *shader, jobs), sources, raw);
       if (result) {

@@ -95,7 +95,7 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
   SourceMap sources;
   Diagnostics diags;
   std::optional<report::ShaderReport> result;
-  auto shader = compiler.load(path, sources, diags, compile_options(args, false).backend);
+  auto shader = compiler.load(path, sources, diags, compile_options(args, false));
   if (shader) {
     // Every variant after the keyword rules and the strip filter; the material
     // rung is counted, not stripped, so that the report shows what it removes.

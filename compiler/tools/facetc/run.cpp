@@ -214,10 +214,10 @@ Result<std::string> read_standard_input(std::istream* in, Diagnostics& diags) {
 
 Result<ir::Shader> load_input(const FacetcArgs& args, const Compiler& compiler, const std::string& input,
                               std::istream* in, SourceMap& sources, Diagnostics& diags) {
-  if (input != "-") return compiler.load(input, sources, diags, compile_options(args, false).backend);
+  if (input != "-") return compiler.load(input, sources, diags, compile_options(args, false));
   auto text = read_standard_input(in, diags);
   FACET_TRY(text);
-  return compiler.load_source(kStdinName, std::move(*text), sources, diags, compile_options(args, false).backend);
+  return compiler.load_source(kStdinName, std::move(*text), sources, diags, compile_options(args, false));
 }
 
 Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
