@@ -18,7 +18,7 @@ int compile_file(const std::string& path, const std::vector<std::string>& keywor
   facet::Compiler compiler;
   facet::CompileOptions options{.keywords = keywords};
   // The results own their messages and the source map they point into.
-  facet::LoadResult loaded = compiler.open_file(path, options);
+  facet::OpenedShader loaded = compiler.open_file(path, options);
   if (!loaded.ok()) {
     std::cerr << loaded.messages();
     return 1;

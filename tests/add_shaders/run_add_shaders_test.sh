@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs facet into a scratch prefix, builds tests/add_shaders/project (a
 # separate CMake project that calls facet_add_shaders) with Ninja, then
-# touches one include and one shader and checks through ninja's explain
-# output that exactly the packages that read them are rebuilt.
+# touches includes, a shader and a scene and checks through ninja's explain
+# output that exactly the packages and images that read them are rebuilt.
 # Usage: run_add_shaders_test.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 build=$1 source=$2 work=$3
@@ -21,6 +21,7 @@ packages=(Tinted Waves Plain)
 for p in "${packages[@]}"; do
   test -s "$work/build/packages/$p.facetpkg" || { echo "no package $p.facetpkg"; cat "$work/build-1.log"; exit 1; }
 done
+test -s "$work/build/packages/TintedBall.png" || { echo "the scene was not rendered"; cat "$work/build-1.log"; exit 1; }
 grep -q "ninja: no work to do" <(ninja -C "$work/build") || { echo "a second build was not a no-op"; exit 1; }
 
 # What ninja would rebuild after a change, by its explain output: the set of
@@ -29,7 +30,7 @@ dirty_after() {
   sleep 1.1  # mtimes of 1 s resolution on some file systems
   touch "$work/project/$1"
   ninja -C "$work/build" -n -d explain > "$work/explain.log" 2>&1
-  grep -o 'packages/[A-Za-z]*\.facetpkg is dirty' "$work/explain.log" | sed 's|packages/||; s|\.facetpkg is dirty||' | sort -u | tr '\n' ' '
+  grep -oE 'packages/[A-Za-z]*\.(facetpkg|png) is dirty' "$work/explain.log" | sed 's|packages/||; s| is dirty||' | sort -u | tr '\n' ' '
   ninja -C "$work/build" > "$work/rebuild.log"
 }
 expect_dirty() {
@@ -42,8 +43,10 @@ expect_dirty() {
   fi
   echo "touching $changed rebuilds: $want"
 }
-expect_dirty include/Tint.cginc Tinted
-expect_dirty include/Waves.cginc Waves
-expect_dirty shaders/Plain.shader Plain
+# The scene draws Tinted.shader: its image depends on Tint.cginc too.
+expect_dirty include/Tint.cginc "Tinted.facetpkg TintedBall.png"
+expect_dirty include/Waves.cginc Waves.facetpkg
+expect_dirty shaders/Plain.shader Plain.facetpkg
+expect_dirty scenes/TintedBall.json TintedBall.png
 grep -q "ninja: no work to do" <(ninja -C "$work/build") || { echo "the rebuild left work to do"; exit 1; }
 echo "facet_add_shaders OK"

@@ -16,6 +16,7 @@
 #include "facet/package.h"
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
+#include "facet/support/make_rule.h"
 #include "check_mode.h"
 #include "jobs.h"
 #include "output_safety.h"

@@ -22,8 +22,4 @@ struct Console {
 // several stages).
 int run_facetc(const FacetcArgs& args, Console& console);
 
-// A make rule "target: dep dep ..." with spaces and '$' escaped for make;
-// deps one per continuation line.
-std::string make_rule(const std::string& target, const std::vector<std::string>& deps);
-
 }  // namespace facet::tools

@@ -597,7 +597,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (options.capture && !scene.post.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
-  ShaderLibrary library(options.cache_dir);
+  ShaderLibrary library(options.cache_dir, options.include_dirs);
   Resources resources(context);
   resources.keep_pixels(options.capture != nullptr);
   Loader loader{context, scene, library, resources, {}};
@@ -874,6 +874,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     for (DrawRecord& r : map->casters.skipped) frame.draws.push_back(std::move(r));
   }
   frame.stats.shaders_loaded = library.loaded();
+  frame.shader_files = library.files_read();
   frame.stats.textures_loaded = resources.textures_loaded();
   frame.stats.compile_ms = library.seconds() * 1000;
   frame.stats.total_ms = ms_since(start);

@@ -20,8 +20,11 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   Timer timer{seconds_};
   auto asset = std::make_unique<ShaderAsset>();
   asset->path = path;
+  asset->files_read.insert(path);
   Diagnostics diags;
-  Result<ir::Shader> shader = compiler_.load(path, asset->sources, diags);
+  CompileOptions load_options;
+  load_options.backend.include_dirs = include_dirs_;
+  Result<ir::Shader> shader = compiler_.load(path, asset->sources, diags, load_options);
   if (!shader) return unexpected(render_text(diags, asset->sources));
   asset->shader = std::move(*shader);
   Result<std::vector<SelectedPass>> passes = compiler_.select_passes(asset->shader, {}, diags);
@@ -33,6 +36,12 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   ShaderAsset* raw = asset.get();
   shaders_[path] = std::move(asset);
   return raw;
+}
+
+std::vector<std::string> ShaderLibrary::files_read() const {
+  std::set<std::string> all;
+  for (const auto& [path, asset] : shaders_) all.insert(asset->files_read.begin(), asset->files_read.end());
+  return {all.begin(), all.end()};
 }
 
 Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
@@ -48,9 +57,11 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
   options.passes = {std::to_string(selected.pass)};
   options.keywords = variants::all_keywords(selected.keywords, key);
   options.cache_dir = cache_dir_;
+  options.backend.include_dirs = include_dirs_;
   Diagnostics diags;
   Result<CompiledShader> out = compiler_.compile(asset.shader, options, asset.sources, diags);
   if (!out) return unexpected(render_text(diags, asset.sources));
+  asset.files_read.insert(out->dependencies.begin(), out->dependencies.end());
   auto variant = std::make_unique<LoadedVariant>();
   variant->package = std::move(out->package);
   if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {

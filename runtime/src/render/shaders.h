@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <utility>
@@ -29,11 +30,13 @@ struct ShaderAsset {
   std::vector<SelectedPass> passes;  // of the SubShader in use
   int queue = 2000;                  // the SubShader's render queue (sema resolves its Queue tag)
   std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<LoadedVariant>> variants;
+  std::set<std::string> files_read;  // the .shader and every file its compiled variants included
 };
 
 class ShaderLibrary {
  public:
-  explicit ShaderLibrary(std::string cache_dir) : cache_dir_(std::move(cache_dir)) {}
+  explicit ShaderLibrary(std::string cache_dir, std::vector<std::string> include_dirs = {})
+      : cache_dir_(std::move(cache_dir)), include_dirs_(std::move(include_dirs)) {}
 
   // Errors are the compiler's diagnostics, rendered as text.
   Result<ShaderAsset*, std::string> load(const std::string& path);
@@ -42,11 +45,14 @@ class ShaderLibrary {
   Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                 const variants::VariantKey& key, bool* compiled);
   double seconds() const { return seconds_; }
+  // Every file the loaded shaders and their compiled variants read, sorted.
+  std::vector<std::string> files_read() const;
   size_t loaded() const { return shaders_.size(); }
 
  private:
   Compiler compiler_;
   std::string cache_dir_;
+  std::vector<std::string> include_dirs_;
   std::map<std::string, std::unique_ptr<ShaderAsset>> shaders_;
   double seconds_ = 0;
 };

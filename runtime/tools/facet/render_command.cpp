@@ -1,5 +1,5 @@
 // facet render scene.json -o out.png [--exr out.exr] [--width W --height H]
-//   [--device SEL] [--stats] [--frames N] [--explain] [--validation] [--cache DIR]
+//   [--device SEL] [--stats] [--frames N] [--explain] [--validation] [--cache DIR] [--depfile FILE]
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -7,16 +7,20 @@
 #include <filesystem>
 #include <optional>
 #include <ostream>
+#include <set>
 
 #include "facet/commands.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/vulkan_context.h"
+#include "facet/support/atomic_file.h"
+#include "facet/support/make_rule.h"
 
 namespace facet::tool {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, exr, device, cache;
+  std::string scene, png, exr, device, cache, depfile;
+  std::vector<std::string> include_dirs;
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false;
 };
@@ -92,6 +96,24 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
   for (const std::string& v : f.compiled) out << "  compiled: " << v << "\n";
 }
 
+// The make rule of the image: the scene, its meshes, textures and shaders,
+// and every file the shaders included (what a build system re-renders on).
+// Refused, before anything is written, when the depfile would replace one of them.
+Result<std::string, std::string> depfile_rule(const RenderArgs& a, const runtime::Scene& scene,
+                                              const runtime::RenderedFrame& frame) {
+  std::set<std::string> deps(frame.shader_files.begin(), frame.shader_files.end());
+  for (const SceneInput& input : scene_inputs(a.scene, scene)) deps.insert(input.path);
+  std::error_code ec;
+  for (const std::string& dep : deps) {
+    if (std::filesystem::equivalent(a.depfile, dep, ec)) {
+      return unexpected(fmt::format(
+          "facet render: error: the depfile '{}' is also a file this render read ({}); nothing was written", a.depfile,
+          dep));
+    }
+  }
+  return make_rule(a.png.empty() ? a.exr : a.png, {deps.begin(), deps.end()});
+}
+
 int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   if (a.png.empty() && a.exr.empty()) {
     err << "facet render: nothing to write: give -o out.png and/or --exr out.exr\n";
@@ -102,7 +124,7 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << scene.error().message << "\n";
     return 1;
   }
-  if (auto clash = output_clash({a.png, a.exr}, scene_inputs(a.scene, *scene))) {
+  if (auto clash = output_clash({a.png, a.exr, a.depfile}, scene_inputs(a.scene, *scene))) {
     err << *clash << "\n";
     return 1;
   }
@@ -111,10 +133,21 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << "facet render: " << runtime::describe(context.error()) << "\n";
     return 1;
   }
-  auto frame = runtime::render_scene(**context, *scene, {.width = a.width, .height = a.height, .cache_dir = a.cache, .frames = a.frames});
+  auto frame = runtime::render_scene(**context, *scene,
+                                     {.width = a.width, .height = a.height, .cache_dir = a.cache,
+                                      .include_dirs = a.include_dirs, .frames = a.frames});
   if (!frame) {
     err << frame.error().message << "\n";
     return 1;
+  }
+  std::string rule;
+  if (!a.depfile.empty()) {
+    auto r = depfile_rule(a, *scene, *frame);
+    if (!r) {
+      err << r.error() << "\n";
+      return 1;
+    }
+    rule = std::move(*r);
   }
   if (a.explain) out << runtime::explain_text(*frame);
   if (a.stats) print_stats(out, *frame, **context);
@@ -127,6 +160,12 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   if (!a.exr.empty()) {
     if (auto w = runtime::write_exr(*frame, a.exr); !w) {
       err << w.error().message << "\n";
+      return 1;
+    }
+  }
+  if (!rule.empty()) {
+    if (auto w = support::write_file_atomically(a.depfile, rule); !w) {
+      err << fmt::format("facet render: error: cannot write the depfile '{}': {}\n", a.depfile, w.error());
       return 1;
     }
   }
@@ -152,6 +191,8 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_flag("--stats", a.stats, "print GPU time and counts");
   app.add_option("--frames", a.frames, "render the frame N times after compiling once; --stats prints the median frame time")
       ->check(CLI::Range(1, 100000));
+  app.add_option("-I,--include-dir", a.include_dirs, "add a folder to the #include search path of the scene's shaders");
+  app.add_option("--depfile", a.depfile, "also write a make rule of every file the render read (scene, meshes, textures, shaders, includes)");
   app.add_flag("--explain", a.explain, "list every draw with its pass, variant keywords and why");
   app.add_flag("--validation", a.validation, "enable the Vulkan validation layer; any message fails the run");
   try {

@@ -40,7 +40,7 @@ TEST(BuildResultTest, ACompileErrorComesAfterTheLoadAndNamesItsLine) {
     ENDCG
   } }
 })";
-  LoadResult loaded = compiler.open_source("mem/Bad.shader", text);
+  OpenedShader loaded = compiler.open_source("mem/Bad.shader", text);
   ASSERT_TRUE(loaded.ok()) << loaded.messages();
   BuildResult r = compiler.build(std::move(loaded));
   EXPECT_FALSE(r.ok());

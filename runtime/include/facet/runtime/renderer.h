@@ -25,6 +25,7 @@ struct FrameCapture;
 struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's size
   std::string cache_dir;      // the compiler's cache folder; empty: none
+  std::vector<std::string> include_dirs;  // #include search folders of the scene's shaders (facetc -I)
   // Frames rendered after loading and compiling once, for timing: the first
   // writes every draw's descriptor sets and uniform data; each later one
   // recomputes the camera and time uniforms, rewrites the members that come
@@ -78,6 +79,7 @@ struct RenderedFrame {
   std::vector<uint8_t> ldr;      // RGBA8: tone-mapped, sRGB-encoded, alpha 255
   std::vector<DrawRecord> draws; // in submission order; skipped passes after them
   std::vector<std::string> compiled;  // "Examples/PhongMultiLight FORWARD_DELTA: POINT", in compile order
+  std::vector<std::string> shader_files;  // every .shader and include the shaders and variants drawn read, sorted
   RenderStats stats;
 };
 

@@ -1,10 +1,6 @@
-// Make-style dependency rules for -M / -MD.
-#include <string>
-#include <vector>
+#include "facet/support/make_rule.h"
 
-#include "run.h"
-
-namespace facet::tools {
+namespace facet {
 namespace {
 
 std::string escape_for_make(const std::string& path) {
@@ -25,4 +21,4 @@ std::string make_rule(const std::string& target, const std::vector<std::string>&
   return rule + "\n";
 }
 
-}  // namespace facet::tools
+}  // namespace facet
