@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "facet/report.h"
+#include "facet/support/text.h"
 
 namespace facet::report {
 namespace {
@@ -72,8 +73,8 @@ void pass_text(const PassReport& p, std::string& out) {
 std::string to_text(const std::vector<ShaderReport>& reports) {
   std::string out;
   for (const ShaderReport& r : reports) {
-    out += fmt::format("shader '{}' ({}): {} programs, {} compiled, {:.3f} s\n", r.name, r.path, r.programs,
-                       r.compiled, r.compile_seconds);
+    out += fmt::format("shader '{}' ({}): {}, {} compiled, {:.3f} s\n", r.name, r.path,
+                       count_of(r.programs, "program", "programs"), r.compiled, r.compile_seconds);
     if (r.estimate) {
       out += fmt::format("estimate (as --estimate gives it before a build): ~{:.2f} s on {} threads ({} programs to compile at {:.1f} ms, "
                          "from {} sampled; preprocessing {:.2f} s)\n",

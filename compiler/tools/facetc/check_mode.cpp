@@ -3,6 +3,8 @@
 // output never depends on -j and a CI log still shows progress.
 #include "check_mode.h"
 
+#include "facet/support/text.h"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -97,7 +99,6 @@ Checked check_one(const FacetcArgs& args, const Compiler& compiler, const StripI
   return out;
 }
 
-std::string plural(size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); }
 
 // "ok   path", "ok   path (2 warnings)" or "FAIL path: first error": the
 // path always starts in column 6.
@@ -106,7 +107,7 @@ std::string check_line(const ShaderCheck& c) {
     std::string error = first_error(c);
     return fmt::format("FAIL {}: {}\n", c.path, error.empty() ? "error: the shader does not compile" : error);
   }
-  std::string detail = c.warnings > 0 ? " (" + plural(c.warnings, "warning") + ")" : "";
+  std::string detail = c.warnings > 0 ? " (" + count_of(c.warnings, "warning", "warnings") + ")" : "";
   if (c.variants == 0) detail += " (no variant selected)";
   return fmt::format("ok   {}{}\n", c.path, detail);
 }
@@ -236,7 +237,7 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
   }
   for (std::thread& t : threads) t.join();
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  console.out << fmt::format("{} of {} shaders compile; {}\n", passed, paths.size(), plural(warnings, "warning"));
+  console.out << fmt::format("{} of {} shaders compile; {}\n", passed, paths.size(), count_of(warnings, "warning", "warnings"));
 
   bool reports_ok = true;
   if (!args.junit_file.empty()) {

@@ -17,6 +17,7 @@
 #include "facet/sema.h"
 #include "facet/shaderlab.h"
 #include "facet/support/make_rule.h"
+#include "facet/support/text.h"
 #include "check_mode.h"
 #include "jobs.h"
 #include "output_safety.h"
@@ -147,11 +148,11 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   double encode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - encode_started).count();
   const CompileStats& s = compiled->stats;
   Produced out{.output = package_output_path(args, input), .dependencies = compiled->dependencies};
-  out.stats = fmt::format("facetc: {}: {} passes, {} variants ({} stripped); programs {}, unique after preprocessing {} "
-                          "(compiled once each), unique SPIR-V {}; {} bytes, {:.2f} s on {} threads\n",
-                          input, s.passes, s.variants, s.variants_stripped, s.stage_programs, s.unique_preprocessed,
-                          s.unique_spirv,
-                          bytes.size(), s.seconds, s.jobs);
+  out.stats = fmt::format("facetc: {}: {}, {} ({} stripped); programs {}, unique after preprocessing {} "
+                          "(compiled once each), unique SPIR-V {}; {}, {:.2f} s on {}\n",
+                          input, count_of(s.passes, "pass", "passes"), count_of(s.variants, "variant", "variants"),
+                          s.variants_stripped, s.stage_programs, s.unique_preprocessed, s.unique_spirv,
+                          count_of(bytes.size(), "byte", "bytes"), s.seconds, count_of(s.jobs, "thread", "threads"));
   out.package = std::move(bytes);
   out.stats += fmt::format("facetc: {}: phases: select {:.3f} s, preprocess {:.3f} s, compile {:.3f} s, "
                            "assemble {:.3f} s, encode {:.3f} s\n",
@@ -285,10 +286,12 @@ Result<Produced> produce(const FacetcArgs& args, const Compiler& compiler, const
       auto e = estimate_build(compiler, *shader, stripped_options(compile_options(args, false), strip, *shader), sources,
                                  diags);
       FACET_TRY(e);
-      return Produced{.bytes = fmt::format("{}: {} variants, {} programs, {} to compile; ~{:.2f} s on {} threads "
+      return Produced{.bytes = fmt::format("{}: {}, {}, {} to compile; ~{:.2f} s on {} "
                                            "(preprocessing {:.2f} s, {:.1f} ms per program from {} sampled)\n",
-                                           input, e->variants, e->programs, e->unique, e->estimated_seconds, e->jobs,
-                                           e->preprocess_seconds, 1000 * e->seconds_per_program, e->sampled),
+                                           input, count_of(e->variants, "variant", "variants"),
+                                           count_of(e->programs, "program", "programs"), e->unique, e->estimated_seconds,
+                                           count_of(e->jobs, "thread", "threads"), e->preprocess_seconds,
+                                           1000 * e->seconds_per_program, e->sampled),
                       .output = args.output};
     }
     case Mode::preprocess:

@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "facet/support/text.h"
+
 namespace facet::runtime {
 namespace {
 
@@ -33,7 +35,6 @@ std::vector<Word> split_words(std::string_view line) {
   return words;
 }
 
-std::string plural(uint64_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
 
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
@@ -95,10 +96,10 @@ std::optional<std::string> index_problem(std::string_view word, uint64_t defined
   if (!too_large && magnitude <= defined) return std::nullopt;
   if (negative) {
     return fmt::format("relative {} {} refers before the first {} (only {} defined so far)", kind.index_name, word,
-                       kind.one, plural(defined, kind.one, kind.many));
+                       kind.one, count_of(defined, kind.one, kind.many));
   }
   return fmt::format("{} {} refers past the {} defined so far", kind.index_name, word,
-                     plural(defined, kind.one, kind.many));
+                     count_of(defined, kind.one, kind.many));
 }
 
 struct Counts {

@@ -70,7 +70,7 @@ TEST_F(FacetcTest, SeveralInputsGoToOutDir) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(fs::exists(dir_ / "pkgs" / "Unlit.facetpkg"));
   EXPECT_TRUE(fs::exists(dir_ / "pkgs" / "VertexColor.facetpkg"));
-  EXPECT_THAT(run.err, HasSubstr("1 passes, 1 variants (0 stripped); programs 2, unique after preprocessing 2 (compiled once each)"));
+  EXPECT_THAT(run.err, HasSubstr("1 pass, 1 variant (0 stripped); programs 2, unique after preprocessing 2 (compiled once each)"));
 }
 
 TEST_F(FacetcTest, KeywordsSelectOneVariantByUnitysRule) {

@@ -41,4 +41,9 @@ constexpr std::string_view trim(std::string_view s) {
   return s;
 }
 
+// "1 pass", "2 passes", "0 passes": a count with its noun in the right number.
+inline std::string count_of(unsigned long long n, std::string_view one, std::string_view many) {
+  return std::to_string(n) + " " + std::string(n == 1 ? one : many);
+}
+
 }  // namespace facet
