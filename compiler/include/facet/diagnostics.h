@@ -101,7 +101,8 @@ struct WarningOptions {
   std::vector<std::string> disabled_groups;  // -Wno-<group>
 };
 
-// Drops or promotes warnings as `options` asks; returns the filtered list.
+// Drops or promotes warnings as `options` asks, and drops the notes of a
+// disabled group; returns the filtered list.
 Diagnostics apply_warning_options(const Diagnostics& diags, const WarningOptions& options);
 
 // Merges diagnostics that are identical but for the variant they came from

@@ -75,10 +75,13 @@ size_t Diagnostics::warning_count() const {
 Diagnostics apply_warning_options(const Diagnostics& diags, const WarningOptions& options) {
   Diagnostics out;
   for (Diagnostic d : diags.all()) {
+    std::string_view group = diag_group(d.id);
+    bool disabled = !group.empty() && std::find(options.disabled_groups.begin(), options.disabled_groups.end(),
+                                                group) != options.disabled_groups.end();
+    // -Wno-<group> silences the group's notes too (a note standing alone,
+    // like the legacy-command one); a note attached to a message stays with it.
+    if (d.severity == Severity::note && disabled) continue;
     if (d.severity == Severity::warning) {
-      std::string_view group = diag_group(d.id);
-      bool disabled = std::find(options.disabled_groups.begin(), options.disabled_groups.end(), group) !=
-                      options.disabled_groups.end();
       if (options.suppress_all || disabled) continue;
       if (options.warnings_as_errors) {
         d.severity = Severity::error;

@@ -88,5 +88,16 @@ TEST(DiagnosticsWarningOptionsTest, WerrorPromotesAndWSuppresses) {
   EXPECT_EQ(apply_warning_options(diags, quiet).size(), 0u);
 }
 
+TEST(DiagnosticsTest, DisablingAGroupSilencesItsNotesAndKeepsOtherGroupsNotes) {
+  Diagnostics diags;
+  diags.add(DiagId::parse_legacy_command, Severity::note, {}, "'Lighting' is a legacy fixed-function command");
+  diags.add(DiagId::parse_unexpected_token, Severity::warning, {}, "w");
+  ASSERT_EQ(diag_group(DiagId::parse_legacy_command), "legacy");
+  Diagnostics kept = apply_warning_options(diags, {.disabled_groups = {"legacy"}});
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept.all()[0].id, DiagId::parse_unexpected_token);
+  EXPECT_EQ(apply_warning_options(diags, {.disabled_groups = {"usepass"}}).size(), 2u);
+}
+
 }  // namespace
 }  // namespace facet

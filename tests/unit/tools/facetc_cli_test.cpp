@@ -73,6 +73,27 @@ TEST_F(FacetcTest, SeveralInputsGoToOutDir) {
   EXPECT_THAT(run.err, HasSubstr("1 pass, 1 variant (0 stripped); programs 2, unique after preprocessing 2 (compiled once each)"));
 }
 
+TEST_F(FacetcTest, WnoLegacySilencesTheLegacyCommandNote) {
+  write_all(dir_ / "lo.shader", R"(Shader "X/LO" {
+  SubShader { Pass {
+    Lighting Off
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+    float4 frag() : SV_Target { return 1; }
+    ENDCG
+  } }
+}
+)");
+  FacetcRun noted = facetc({"lo.shader", "-o", "a.facetpkg"});
+  ASSERT_EQ(noted.exit_code, 0) << noted.err;
+  EXPECT_THAT(noted.err, HasSubstr("lo.shader:3:5: note: 'Lighting' is a legacy fixed-function command"));
+  FacetcRun quiet = facetc({"lo.shader", "-o", "b.facetpkg", "-Wno-legacy"});
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+}
+
 TEST_F(FacetcTest, KeywordsSelectOneVariantByUnitysRule) {
   ASSERT_EQ(facetc({example("Keywords.shader"), "--keywords", "FOG_EXP2 _OVERLAY_ADD", "-o", "k.facetpkg"})
                 .exit_code, 0);
