@@ -7,13 +7,15 @@ using glm::dvec3;
 
 namespace {
 
-const ModelParam kAlbedo = colour("albedo", dvec3(1.0), "diffuse albedo");
-const ModelParam kSigma = number("sigma", 0.25, 0.0, 1.5707963, "slope deviation in radians");
+// Functions, not constants: the table may be built during another file's
+// static initialisation (a test's parameter list).
+ModelParam albedo_param() { return colour("albedo", dvec3(1.0), "diffuse albedo"); }
+ModelParam sigma_param() { return number("sigma", 0.25, 0.0, 1.5707963, "slope deviation in radians"); }
 
 LightingModel lambert() {
   LightingModel m = facet_row("lambert", "Lambert", "c = FacetFd_Lambert() * a.NoL;",
                               [](const ModelPoint& in) { return dvec3(FacetFd_Lambert() * angles(in).NoL); });
-  with_params(m, "FacetFd_Lambert", {kAlbedo}, [](const ModelParams& p) {
+  with_params(m, "FacetFd_Lambert", {albedo_param()}, [](const ModelParams& p) {
     return above_surface([c = p.col("albedo")](auto&, auto&, auto&) { return c * FacetFd_Lambert(); });
   });
   return m;
@@ -26,7 +28,7 @@ LightingModel burley() {
                                 return dvec3(FacetFd_Burley(a.NoV, a.NoL, a.LoH, in.roughness) * a.NoL);
                               },
                               Energy::violator);
-  with_params(m, "FacetFd_Burley", {roughness_param(), kAlbedo}, [](const ModelParams& p) {
+  with_params(m, "FacetFd_Burley", {roughness_param(), albedo_param()}, [](const ModelParams& p) {
     return above_surface([c = p.col("albedo"), r = p.num("roughness")](auto&, auto&, auto& a) {
       return c * FacetFd_Burley(a.NoV, a.NoL, a.LoH, r);
     });
@@ -40,7 +42,7 @@ LightingModel frostbite() {
                                 FacetAngles a = angles(in);
                                 return dvec3(FacetFd_Frostbite(a.NoV, a.NoL, a.LoH, in.roughness * in.roughness) * a.NoL);
                               });
-  with_params(m, "FacetFd_Frostbite (alpha = r^2)", {roughness_param(), kAlbedo}, [](const ModelParams& p) {
+  with_params(m, "FacetFd_Frostbite (alpha = r^2)", {roughness_param(), albedo_param()}, [](const ModelParams& p) {
     return above_surface([c = p.col("albedo"), r = p.num("roughness")](auto&, auto&, auto& a) {
       return c * FacetFd_Frostbite(a.NoV, a.NoL, a.LoH, r * r);
     });
@@ -57,7 +59,7 @@ LightingModel oren_nayar_qualitative() {
                                 return dvec3(FacetFd_OrenNayarQualitative(a.NoV, a.NoL, a.LoV, in.roughness) * a.NoL);
                               },
                               Energy::violator);
-  with_params(m, "FacetFd_OrenNayarQualitative", {kSigma, kAlbedo}, [](const ModelParams& p) {
+  with_params(m, "FacetFd_OrenNayarQualitative", {sigma_param(), albedo_param()}, [](const ModelParams& p) {
     return above_surface([c = p.col("albedo"), s = p.num("sigma")](auto&, auto&, auto& a) {
       return c * FacetFd_OrenNayarQualitative(a.NoV, a.NoL, a.LoV, s);
     });
@@ -72,7 +74,7 @@ LightingModel oren_nayar() {
                                 FacetAngles a = angles(in);
                                 return dvec3(FacetFd_OrenNayar(a.NoV, a.NoL, a.LoV, in.roughness, 1.0) * a.NoL);
                               });
-  with_params(m, "FacetFd_OrenNayar (per channel: its interreflection term is quadratic in albedo)", {kSigma, kAlbedo},
+  with_params(m, "FacetFd_OrenNayar (per channel: its interreflection term is quadratic in albedo)", {sigma_param(), albedo_param()},
               [](const ModelParams& p) {
                 return above_surface([c = p.col("albedo"), s = p.num("sigma")](auto&, auto&, auto& a) {
                   return dvec3(FacetFd_OrenNayar(a.NoV, a.NoL, a.LoV, s, c.r), FacetFd_OrenNayar(a.NoV, a.NoL, a.LoV, s, c.g),

@@ -11,7 +11,9 @@ using glm::dvec3;
 
 namespace {
 
-const ModelParam kExponent = number("exponent", 50.0, 1e-4, 1e5, "specular exponent n");
+// A function, not a constant: the table may be built during another file's
+// static initialisation.
+ModelParam exponent_param() { return number("exponent", 50.0, 1e-4, 1e5, "specular exponent n"); }
 
 LightingModel phong() {
   LightingModel m = facet_row(
@@ -22,7 +24,7 @@ LightingModel phong() {
         return dvec3(FacetPhongNormalized(2 * a.NoL * a.NoV - a.LoV, FacetAlphaToBlinnPhongExponent(clamped_alpha(in))) *
                      a.NoL);
       });
-  with_params(m, "FacetPhongNormalized", {kExponent}, [](const ModelParams& p) {
+  with_params(m, "FacetPhongNormalized", {exponent_param()}, [](const ModelParams& p) {
     return above_surface([n = p.num("exponent")](auto&, auto&, auto& a) {
       return dvec3(FacetPhongNormalized(2.0 * a.NoL * a.NoV - a.LoV, n));
     });
@@ -39,7 +41,7 @@ LightingModel blinn_phong() {
         return dvec3(FacetBlinnPhongNormalized(a.NoH, FacetAlphaToBlinnPhongExponent(clamped_alpha(in))) * a.NoL);
       },
       Energy::violator);
-  with_params(m, "FacetBlinnPhongNormalized", {kExponent}, [](const ModelParams& p) {
+  with_params(m, "FacetBlinnPhongNormalized", {exponent_param()}, [](const ModelParams& p) {
     return above_surface([n = p.num("exponent")](auto&, auto&, auto& a) { return dvec3(FacetBlinnPhongNormalized(a.NoH, n)); });
   });
   return m;
