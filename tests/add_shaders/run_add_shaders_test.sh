@@ -15,6 +15,11 @@ done
 test -f "$work/prefix/lib/cmake/facet/FacetShaders.cmake" || { echo "no FacetShaders.cmake installed"; exit 1; }
 cp -r "$source/tests/add_shaders/project" "$work/project"
 export FACET_STDLIB_DIR="$work/prefix/share/facet/stdlib"
+# In a sanitizer build, the scene's render would fail LeakSanitizer's exit
+# check on lavapipe's memory: the Vulkan loader unloads the driver before
+# exit, so its leaks show as "<unknown module>" and tests/lsan.supp cannot
+# match them. The in-process render tests check facet's own memory.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 cmake -S "$work/project" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 ninja -C "$work/build" > "$work/build-1.log"
 packages=(Tinted Waves Plain)
