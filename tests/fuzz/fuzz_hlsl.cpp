@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   text.append(kHead).append(fuzz::as_text(data, size)).append(kTail);
   SourceMap sources;
   Diagnostics diags;
-  auto shader = compiler().load_source(path, std::move(text), sources, diags, options.backend);
+  auto shader = compiler().load_source(path, std::move(text), sources, diags, options);
   if (shader) (void)compiler().compile(*shader, options, sources, diags);
   (void)render_text(diags, sources);
   return 0;
