@@ -48,22 +48,7 @@ class FacetRenderDepfileTest : public FacetcTest {
     fs::copy_file(fs::path(FACET_SOURCE_DIR) / "examples" / "textures" / "checker.png", dir_ / "checker.png");
   }
 
-  FacetcRun render(const std::vector<std::string>& args) const {
-    // Under ASan the render's own leak check is off: the Vulkan loader
-    // unloads lavapipe before exit, so the driver's leaks (tests/lsan.supp)
-    // show as "<unknown module>" and no suppression can match them. The
-    // in-process render tests check facet's memory.
-    std::string command = "cd " + shell_quote(dir_.string()) +
-                          " && ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " +
-                          shell_quote(std::string(FACET_PATH)) + " render";
-    for (const std::string& a : args) command += " " + shell_quote(a);
-    command += " >stdout.txt 2>stderr.txt";
-    int status = std::system(command.c_str());
-    FacetcRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.err = read_all(dir_ / "stderr.txt");
-    return run;
-  }
+  FacetcRun render(const std::vector<std::string>& args) const { return facet_render(args); }
 };
 
 TEST_F(FacetRenderDepfileTest, TheDepfileListsTheSceneItsFilesAndEveryIncludeOfItsShaders) {

@@ -33,19 +33,7 @@ class FacetRenderOutputTest : public FacetcTest {
     fs::copy_file(fs::path(FACET_SOURCE_DIR) / "examples" / "textures" / "checker.png", dir_ / "checker.png");
   }
 
-  FacetcRun render(const std::vector<std::string>& args) const {
-    std::string command = "cd " + shell_quote(dir_.string()) + " && " + shell_quote(facet_binary().string()) +
-                          " render";
-    for (const std::string& a : args) command += " " + shell_quote(a);
-    command += " >stdout.txt 2>stderr.txt";
-    int status = std::system(command.c_str());
-    FacetcRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.err = read_all(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    return run;
-  }
+  FacetcRun render(const std::vector<std::string>& args) const { return facet_render(args); }
 
   // The render fails, names `output` as `what`, and `file` keeps its bytes.
   void expect_refused(const std::vector<std::string>& args, const std::string& output, const std::string& what,
