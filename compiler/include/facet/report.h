@@ -71,6 +71,16 @@ struct WhatIf {
                                 // (counted what-ifs: per program, before deduplication)
 };
 
+// A what-if a strip file applies: one keyword set of a pass held in its
+// default state (its other keywords always off). Savings are marginal: with
+// the pass's steps before it applied.
+struct StripStep {
+  std::string change;                    // "hold 'multi_compile_fog _ FOG_LINEAR ...' off (always_off ...)"
+  std::vector<std::string> always_off;   // the strip rule's keywords
+  uint64_t programs_saved = 0;
+  double seconds_saved = 0;              // measured compile time of the programs no longer needed
+};
+
 struct VariantRow {
   std::vector<std::string> keywords;
   double seconds = 0;         // compile time of the programs it was first to need
@@ -89,7 +99,10 @@ struct PassReport {
   // counted in full, not built unless asked (--build-unreachable).
   std::vector<std::string> unreachable_keywords;
   std::vector<Finding> findings;
-  std::vector<WhatIf> what_ifs;
+  std::vector<WhatIf> what_ifs;      // by programs saved, most first; none that saves nothing
+  // Up to three steps, each the best given those before it, counted from the
+  // build's variants; empty for a pass not enumerated.
+  std::vector<StripStep> strip_steps;
   std::vector<VariantRow> variants;  // in key order
   double compile_seconds = 0;        // sum over the programs compiled
   uint64_t spirv_bytes = 0;          // unique modules of the pass
@@ -108,6 +121,25 @@ struct ShaderReport {
 // and the files it included.
 ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPass>& passes,
                           const CompiledShader& compiled, const SourceMap& sources, const ReportOptions& options);
+
+// The summary at the top of a shader's report: its programs now, and after
+// the three best what-ifs a strip file can apply, chosen across its
+// enumerated passes (each the best given those before it). Feeding
+// `--emit-strip`'s file back with `--strip` builds `programs_after` programs.
+struct PlannedStep {
+  uint32_t pass = 0;  // PassReport::index
+  std::string pass_name;
+  StripStep step;
+};
+
+struct StripPlan {
+  uint64_t programs_now = 0, programs_after = 0;  // enumerated passes only
+  double seconds_saved = 0;
+  std::vector<PlannedStep> steps;
+  uint32_t passes_not_enumerated = 0;  // not in these figures
+};
+
+StripPlan strip_plan(const ShaderReport& report, size_t max_steps = 3);
 
 std::string to_text(const std::vector<ShaderReport>& reports);
 // Stable keys; times are rounded to microseconds.

@@ -1,6 +1,7 @@
 // build_report: counts, sets and per-variant rows from a compile.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -84,6 +85,15 @@ std::vector<VariantRow> variant_rows(const SelectedPass& pass, const package::Pa
   return rows;
 }
 
+// Most programs saved first; a change that saves no program is no advice.
+void sort_by_saving(std::vector<WhatIf>& what_ifs) {
+  std::erase_if(what_ifs, [](const WhatIf& w) { return w.programs_saved.is_zero(); });
+  std::stable_sort(what_ifs.begin(), what_ifs.end(), [](const WhatIf& a, const WhatIf& b) {
+    if (a.programs_saved != b.programs_saved) return a.programs_saved > b.programs_saved;
+    return a.seconds_saved > b.seconds_saved;
+  });
+}
+
 }  // namespace
 
 ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPass>& passes,
@@ -117,7 +127,9 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
       pr.what_ifs = counted_what_ifs(sel, options, compiles ? pr.compile_seconds / double(compiles) : 0);
     } else {
       pr.what_ifs = what_ifs(sel, compiled.programs, p, pr.compile_seconds, options);
+      pr.strip_steps = strip_steps(sel, pkg.passes[p], compiled.programs, p);
     }
+    sort_by_saving(pr.what_ifs);
     report.compile_seconds += pr.compile_seconds;
     report.passes.push_back(std::move(pr));
   }

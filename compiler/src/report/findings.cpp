@@ -224,12 +224,6 @@ std::pair<uint64_t, uint64_t> without_set(const variants::KeywordSet& set, const
   return {programs.size(), compiles.size()};
 }
 
-std::string set_spelling(const variants::KeywordSet& set) {
-  std::string words;
-  for (const std::string& k : set.keywords) words += " " + (k.empty() ? std::string("_") : k);
-  return set.pragma + words;
-}
-
 // The space's programs (variants each stage needs, summed) over `stages`.
 BigCount programs_in(const variants::KeywordSpace& space, const std::set<Stage>& stages,
                      const ReportOptions& options) {
@@ -262,6 +256,12 @@ variants::KeywordSpace without_set_space(variants::KeywordSpace space, const var
 }
 
 }  // namespace
+
+std::string set_spelling(const variants::KeywordSet& set) {
+  std::string words;
+  for (const std::string& k : set.keywords) words += " " + (k.empty() ? std::string("_") : k);
+  return set.pragma + words;
+}
 
 std::vector<WhatIf> what_ifs(const SelectedPass& pass, const std::vector<ProgramRecord>& records, uint32_t pass_index,
                              double compile_seconds, const ReportOptions& options) {

@@ -8,6 +8,7 @@
 
 #include "facet/markup.h"
 #include "facet/report.h"
+#include "facet/support/text.h"
 
 namespace facet::report {
 namespace {
@@ -54,21 +55,37 @@ std::string set_label(const KeywordSetRow& s) {
   return words;
 }
 
-// A rung that needs every program compiled: a dash for a pass counted only.
-std::string compiled_rung(const PassReport& p, uint64_t value) { return p.enumerated ? std::to_string(value) : "–"; }
+struct Column {
+  const char* header;
+  std::string (*value)(const Ladder&);
+};
+
+// The ladder's columns that hold data for this pass: the material rung only
+// with manifests, the compiled rungs only when the pass was enumerated.
+std::vector<Column> ladder_columns(const PassReport& p) {
+  std::vector<Column> columns = {{"full", [](const Ladder& l) { return l.full.to_string(); }},
+                                 {"after skip_variants", [](const Ladder& l) { return l.after_skip.to_string(); }}};
+  bool materials = std::any_of(p.ladders.begin(), p.ladders.end(), [](const Ladder& l) { return l.has_materials; });
+  if (materials) columns.push_back({"after materials", [](const Ladder& l) { return l.after_materials.to_string(); }});
+  columns.push_back({"reachable", [](const Ladder& l) { return l.reachable.to_string(); }});
+  if (p.enumerated) {
+    columns.push_back({"after keyword_rule + --strip", [](const Ladder& l) { return std::to_string(l.after_strip); }});
+    columns.push_back({"programs", [](const Ladder& l) { return std::to_string(l.programs); }});
+    columns.push_back({"unique after preprocessing", [](const Ladder& l) { return std::to_string(l.unique_tokens); }});
+    columns.push_back({"unique SPIR-V", [](const Ladder& l) { return std::to_string(l.unique_spirv); }});
+  }
+  return columns;
+}
 
 std::string ladder_table(const PassReport& p) {
-  std::string t = "<table><tr><th></th><th>full</th><th>after skip_variants</th>"
-                  "<th>after materials</th><th>reachable</th><th>after keyword_rule + --strip</th>"
-                  "<th>after scene needs</th><th>programs</th><th>unique after preprocessing</th>"
-                  "<th>unique SPIR-V</th></tr>\n";
+  std::vector<Column> columns = ladder_columns(p);
+  std::string t = "<table class=\"ladder\"><tr><th></th>";
+  for (const Column& c : columns) t += fmt::format("<th>{}</th>", xml_escape(c.header));
+  t += "</tr>\n";
   for (const Ladder& l : p.ladders) {
-    t += fmt::format("<tr><th>{}</th><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>–</td><td>{}</td>"
-                     "<td>{}</td><td>{}</td></tr>\n",
-                     xml_escape(l.scope), l.full.to_string(), l.after_skip.to_string(),
-                     l.has_materials ? l.after_materials.to_string() : "–", l.reachable.to_string(),
-                     compiled_rung(p, l.after_strip), compiled_rung(p, l.programs), compiled_rung(p, l.unique_tokens),
-                     compiled_rung(p, l.unique_spirv));
+    t += fmt::format("<tr><th>{}</th>", xml_escape(l.scope));
+    for (const Column& c : columns) t += fmt::format("<td>{}</td>", c.value(l));
+    t += "</tr>\n";
   }
   t += "</table>\n";
   if (!p.enumerated) {
@@ -81,6 +98,29 @@ std::string ladder_table(const PassReport& p) {
                      xml_escape(fmt::format("{}", fmt::join(p.unreachable_keywords, " "))));
   }
   return t;
+}
+
+// The slowest variants with their compile times (each that of the programs
+// it was first to need).
+std::string slowest_table(const PassReport& p) {
+  constexpr size_t kShown = 10;
+  std::vector<const VariantRow*> slowest;
+  for (const VariantRow& v : p.variants) {
+    if (v.seconds > 0) slowest.push_back(&v);
+  }
+  if (slowest.empty()) return "";
+  std::stable_sort(slowest.begin(), slowest.end(), [](auto* a, auto* b) { return a->seconds > b->seconds; });
+  std::string h = fmt::format("<p class=\"caption\">The {} slowest of {} ({} compiled)</p>\n",
+                              std::min(kShown, slowest.size()), count_of(p.variants.size(), "variant", "variants"),
+                              slowest.size());
+  h += "<table class=\"slowest\"><tr><th>variant keywords</th><th>compile seconds</th><th>SPIR-V bytes</th></tr>\n";
+  for (size_t i = 0; i < slowest.size() && i < kShown; ++i) {
+    const VariantRow& v = *slowest[i];
+    std::string words = v.keywords.empty() ? "(none)" : fmt::format("{}", fmt::join(v.keywords, " "));
+    h += fmt::format("<tr><td><code>{}</code></td><td>{:.4f}</td><td>{}</td></tr>\n", xml_escape(words), v.seconds,
+                     v.spirv_bytes);
+  }
+  return h + "</table>\n";
 }
 
 std::string pass_section(const PassReport& p) {
@@ -112,7 +152,34 @@ std::string pass_section(const PassReport& p) {
     }
     h += "</table>\n";
   }
+  h += slowest_table(p);
   return h;
+}
+
+std::string summary_section(const StripPlan& plan) {
+  std::string h = fmt::format("<p class=\"summary\"><b>{}</b> now", count_of(plan.programs_now, "program", "programs"));
+  if (plan.steps.empty()) {
+    h += "; no keyword set a strip file could hold at its default saves a program";
+  } else {
+    h += fmt::format(", <b>{}</b> after the {} a strip file applies ({} fewer, ~{:.3f} s saved; "
+                     "<code>--emit-strip FILE</code> writes {}):",
+                     plan.programs_after,
+                     plan.steps.size() == 1 ? std::string("best what-if") : fmt::format("{} best what-ifs", plan.steps.size()),
+                     plan.programs_now - plan.programs_after, plan.seconds_saved, plan.steps.size() == 1 ? "it" : "them");
+  }
+  if (plan.passes_not_enumerated > 0) {
+    h += fmt::format(" ({} too large to enumerate not in these figures)",
+                     count_of(plan.passes_not_enumerated, "pass", "passes"));
+  }
+  h += "</p>\n";
+  if (plan.steps.empty()) return h;
+  h += "<ol class=\"summary-steps\">\n";
+  for (const PlannedStep& s : plan.steps) {
+    h += fmt::format("<li>pass #{}{}: {} &rarr; {} fewer, ~{:.3f} s</li>\n", s.pass,
+                     s.pass_name.empty() ? "" : " '" + xml_escape(s.pass_name) + "'", xml_escape(s.step.change),
+                     s.step.programs_saved, s.step.seconds_saved);
+  }
+  return h + "</ol>\n";
 }
 
 }  // namespace
@@ -149,6 +216,7 @@ code { background: #eef1f5; padding: 0 3px; }
                        r.estimate->estimated_seconds, r.estimate->jobs, r.estimate->unique,
                        1000 * r.estimate->seconds_per_program, r.estimate->sampled);
     }
+    h += summary_section(strip_plan(r));
     for (const PassReport& p : r.passes) h += pass_section(p);
   }
   return h + "</body></html>\n";

@@ -61,6 +61,18 @@ Json pass_json(const PassReport& p) {
   return j;
 }
 
+Json summary_json(const StripPlan& plan) {
+  Json j = {{"programs_now", plan.programs_now}, {"programs_after", plan.programs_after},
+            {"seconds_saved", micro(plan.seconds_saved)}, {"steps", Json::array()}};
+  for (const PlannedStep& s : plan.steps) {
+    j["steps"].push_back({{"pass", s.pass}, {"pass_name", s.pass_name}, {"change", s.step.change},
+                          {"always_off", s.step.always_off}, {"programs_saved", s.step.programs_saved},
+                          {"seconds_saved", micro(s.step.seconds_saved)}});
+  }
+  j["passes_not_enumerated"] = plan.passes_not_enumerated;
+  return j;
+}
+
 }  // namespace
 
 std::string_view finding_name(FindingKind kind) {
@@ -76,7 +88,8 @@ std::string to_json(const std::vector<ShaderReport>& reports) {
   Json doc = {{"format", "facet-variant-report"}, {"version", 1}, {"shaders", Json::array()}};
   for (const ShaderReport& r : reports) {
     Json s = {{"path", r.path}, {"name", r.name}, {"programs", r.programs}, {"compiled", r.compiled},
-              {"compile_seconds", micro(r.compile_seconds)}, {"passes", Json::array()}};
+              {"compile_seconds", micro(r.compile_seconds)}, {"summary", summary_json(strip_plan(r))},
+              {"passes", Json::array()}};
     if (r.estimate) {
       const BuildEstimate& e = *r.estimate;
       s["estimate"] = {{"programs", e.programs}, {"to_compile", e.unique}, {"sampled", e.sampled},

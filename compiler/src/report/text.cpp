@@ -15,18 +15,37 @@ std::string set_words(const KeywordSetRow& s) {
   return out;
 }
 
-// A rung that needs every program compiled: "-" for a pass counted only.
-std::string compiled_rung(const PassReport& p, uint64_t value) { return p.enumerated ? std::to_string(value) : "-"; }
+struct Column {
+  const char* header;
+  std::string (*value)(const Ladder&);
+};
+
+// The ladder's columns that hold data for this pass: the material rung only
+// with manifests, the compiled rungs only when the pass was enumerated.
+std::vector<Column> ladder_columns(const PassReport& p) {
+  std::vector<Column> columns = {{"full", [](const Ladder& l) { return l.full.to_string(); }},
+                                 {"after skip", [](const Ladder& l) { return l.after_skip.to_string(); }}};
+  bool materials = std::any_of(p.ladders.begin(), p.ladders.end(), [](const Ladder& l) { return l.has_materials; });
+  if (materials) columns.push_back({"materials", [](const Ladder& l) { return l.after_materials.to_string(); }});
+  columns.push_back({"reachable", [](const Ladder& l) { return l.reachable.to_string(); }});
+  if (p.enumerated) {
+    columns.push_back({"after strip", [](const Ladder& l) { return std::to_string(l.after_strip); }});
+    columns.push_back({"programs", [](const Ladder& l) { return std::to_string(l.programs); }});
+    columns.push_back({"unique pp", [](const Ladder& l) { return std::to_string(l.unique_tokens); }});
+    columns.push_back({"unique spv", [](const Ladder& l) { return std::to_string(l.unique_spirv); }});
+  }
+  return columns;
+}
 
 void ladder_table(const PassReport& p, std::string& out) {
-  out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", "", "full", "after skip",
-                     "materials", "reachable", "after strip", "programs", "unique pp", "unique spv");
+  std::vector<Column> columns = ladder_columns(p);
+  out += fmt::format("  {:<10}", "");
+  for (const Column& c : columns) out += fmt::format(" {:>12}", c.header);
+  out += "\n";
   for (const Ladder& l : p.ladders) {
-    out += fmt::format("  {:<10} {:>12} {:>12} {:>12} {:>11} {:>12} {:>10} {:>10} {:>10}\n", l.scope,
-                       l.full.to_string(), l.after_skip.to_string(),
-                       l.has_materials ? l.after_materials.to_string() : "-", l.reachable.to_string(),
-                       compiled_rung(p, l.after_strip), compiled_rung(p, l.programs), compiled_rung(p, l.unique_tokens),
-                       compiled_rung(p, l.unique_spirv));
+    out += fmt::format("  {:<10}", l.scope);
+    for (const Column& c : columns) out += fmt::format(" {:>12}", c.value(l));
+    out += "\n";
   }
   if (!p.enumerated) {
     out += fmt::format("  not enumerated: {} variants are more than --max-variants allows; the counts are exact, "
@@ -68,6 +87,36 @@ void pass_text(const PassReport& p, std::string& out) {
   }
 }
 
+std::string pass_label(const PlannedStep& s) {
+  return fmt::format("pass #{}{}", s.pass, s.pass_name.empty() ? "" : " '" + s.pass_name + "'");
+}
+
+void summary_text(const StripPlan& plan, std::string& out) {
+  if (plan.steps.empty()) {
+    out += fmt::format("summary: {} now; no keyword set a strip file could hold at its default saves a program\n",
+                       count_of(plan.programs_now, "program", "programs"));
+  } else {
+    std::string which = plan.steps.size() == 1 ? "the best what-if"
+                                               : fmt::format("the {} best what-ifs", plan.steps.size());
+    out += fmt::format("summary: {} now, {} after {} a strip file applies ({} fewer, ~{:.3f} s saved; "
+                       "--emit-strip FILE writes {}):\n",
+                       count_of(plan.programs_now, "program", "programs"), plan.programs_after, which,
+                       plan.programs_now - plan.programs_after, plan.seconds_saved,
+                       plan.steps.size() == 1 ? "it" : "them");
+    for (size_t i = 0; i < plan.steps.size(); ++i) {
+      const PlannedStep& s = plan.steps[i];
+      out += fmt::format("  {}. {}: {} -> {} fewer, ~{:.3f} s\n", i + 1, pass_label(s), s.step.change,
+                         s.step.programs_saved, s.step.seconds_saved);
+    }
+  }
+  if (plan.passes_not_enumerated > 0) {
+    out += fmt::format("  ({} too large to enumerate {} not in these figures; see {} what-ifs)\n",
+                       count_of(plan.passes_not_enumerated, "pass", "passes"),
+                       plan.passes_not_enumerated == 1 ? "is" : "are",
+                       plan.passes_not_enumerated == 1 ? "its" : "their");
+  }
+}
+
 }  // namespace
 
 std::string to_text(const std::vector<ShaderReport>& reports) {
@@ -82,6 +131,7 @@ std::string to_text(const std::vector<ShaderReport>& reports) {
                          1000 * r.estimate->seconds_per_program, r.estimate->sampled,
                          r.estimate->preprocess_seconds);
     }
+    summary_text(strip_plan(r), out);
     for (const PassReport& p : r.passes) pass_text(p, out);
     out += "\n";
   }

@@ -34,7 +34,7 @@ struct RawArgs {
   bool no_cache = false;
   std::string unity_version;
   bool check = false;
-  std::string junit, sarif;
+  std::string junit, sarif, emit_strip;
   // Input limits (docs/cli.md): sizes as N, NK, NM or NG; "" keeps the default.
   std::string max_includes, max_include_bytes, max_preprocessed_bytes, max_unroll, time_limit;
 };
@@ -70,6 +70,8 @@ void add_options(CLI::App& app, RawArgs& raw) {
       ->allow_extra_args(false);
   app.add_option("--strip", raw.strip_files, "a strip filter (JSON): deny/allow/always_on/always_off rules")
       ->allow_extra_args(false);
+  app.add_option("--emit-strip", raw.emit_strip,
+                 "with --report: write the strip filter that applies the summary's what-ifs to FILE");
   app.add_option("--pass", raw.passes, "a pass by name (case-insensitive) or 0-based index; repeatable")->allow_extra_args(false);
   app.add_option("--stage", raw.stage, "vertex, fragment, geometry, hull or domain");
   app.add_option("--keywords", raw.keywords, "enabled keywords, e.g. \"FOG_LINEAR _EMISSION\"")->allow_extra_args(false);
@@ -250,11 +252,13 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
   }
   if (!args.out_dir.empty() && args.mode != Mode::package) return "--out-dir is for packages";
   bool strips = args.mode == Mode::package || args.mode == Mode::report || args.mode == Mode::depfile_only ||
-                args.mode == Mode::check ||
+                args.mode == Mode::check || args.mode == Mode::estimate ||
                 (args.mode == Mode::dump && args.dump == DumpKind::package);
   if ((!raw.material_files.empty() || !raw.strip_files.empty()) && !strips) {
-    return "--materials and --strip apply to packages, --report and --check";
+    return "--materials and --strip apply to packages, --report, --estimate and --check";
   }
+  if (!raw.emit_strip.empty() && args.mode != Mode::report) return "--emit-strip goes with --report";
+  if (!raw.emit_strip.empty() && raw.emit_strip == args.output) return "--emit-strip and -o name the same file";
   if ((!raw.junit.empty() || !raw.sarif.empty()) && args.mode != Mode::check) {
     return "--junit and --sarif go with --check";
   }
@@ -307,6 +311,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.stats = raw.stats;
   args.material_files = raw.material_files;
   args.strip_files = raw.strip_files;
+  args.emit_strip_file = raw.emit_strip;
   args.jobs_format = raw.emit_jobs == "json" ? JobsFormat::json : JobsFormat::ninja;
   args.program = raw.program;
   args.compile_flags = compile_flags(raw);

@@ -4,11 +4,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iostream>
 #include <unistd.h>
 
 #include "facet/report.h"
+#include "facet/support/text.h"
 #include "find_shaders.h"
 #include "output_safety.h"
+#include "progress.h"
+#include "strip_filter.h"
 #include "units.h"
 
 namespace facet::tools {
@@ -59,16 +63,20 @@ std::optional<report::ShaderReport> report_passes(const Compiler& compiler, cons
                                                   CompileOptions options, std::vector<std::string> subset,
                                                   bool counted, report::ReportOptions report_options,
                                                   SourceMap& sources, Diagnostics& diags,
-                                                  std::vector<std::string>& read) {
+                                                  std::vector<std::string>& read, bool show_progress) {
   options.passes = std::move(subset);
   if (counted) {
     options.keywords = std::vector<std::string>{};
     options.strip = {};
+    options.materials.reset();
   }
   Diagnostics selection_diags;  // the first selection, of every pass, reported these
   auto passes = compiler.select_passes(shader, options, selection_diags);
   if (!passes) return std::nullopt;
+  ProgressBar bar(std::cerr, show_progress);
+  options.progress = [&](uint64_t done, uint64_t total) { bar.update(done, total); };
   auto compiled = compiler.compile(shader, options, sources, diags);
+  bar.finish();
   if (!compiled) return std::nullopt;
   read.insert(read.end(), compiled->dependencies.begin(), compiled->dependencies.end());
   report_options.counted_only = counted;
@@ -97,10 +105,10 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
   std::optional<report::ShaderReport> result;
   auto shader = compiler.load(path, sources, diags, compile_options(args, false));
   if (shader) {
-    // Every variant after the keyword rules and the strip filter; the material
-    // rung is counted, not stripped, so that the report shows what it removes.
-    CompileOptions options = compile_options(args, false);
-    options.strip = strip.filter;
+    // The build the options describe: the variants left by the keyword rules,
+    // the material manifests and the strip filter; the ladder still counts
+    // the rungs before them, so that the report shows what each removes.
+    CompileOptions options = stripped_options(compile_options(args, false), strip, *shader);
     report::ReportOptions report_options;
     if (strip.materials) report_options.materials = material_keywords(*strip.materials, *shader);
     if (auto passes = compiler.select_passes(*shader, options, diags)) {
@@ -109,11 +117,14 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
         (too_large_to_enumerate(pass, options) ? counted : enumerable).push_back(std::to_string(pass.pass));
       }
       bool ok = true;
+      // A bar only for people: on a terminal, with text diagnostics.
+      bool show_progress = isatty(STDERR_FILENO) == 1 && args.diagnostics_format == DiagnosticsFormat::text;
       report::ShaderReport merged{.path = sources.path(shader->file), .name = shader->name};
       for (bool counting : {false, true}) {
         std::vector<std::string>& subset = counting ? counted : enumerable;
         if (subset.empty() || !ok) continue;
-        auto part = report_passes(compiler, *shader, options, subset, counting, report_options, sources, diags, read);
+        auto part = report_passes(compiler, *shader, options, subset, counting, report_options, sources, diags, read,
+                                  show_progress);
         if (part) merge_report(merged, std::move(*part));
         ok = part.has_value();
       }
@@ -123,6 +134,16 @@ std::optional<report::ShaderReport> report_one(const FacetcArgs& args, const Com
   for (FileId id = 0; id < sources.file_count(); ++id) read.push_back(sources.path(id));
   show_diagnostics(args, diags, sources, console, json_diagnostics);
   return result;
+}
+
+// The filter the report was built with, plus one always_off rule per step
+// of the summary: the build that `programs_after` counts.
+variants::StripFilter planned_filter(variants::StripFilter filter, const report::ShaderReport& report) {
+  for (const report::PlannedStep& s : report::strip_plan(report).steps) {
+    filter.rules.push_back(
+        {.kind = variants::StripKind::always_off, .keywords = s.step.always_off, .pass = std::to_string(s.pass)});
+  }
+  return filter;
 }
 
 }  // namespace
@@ -140,6 +161,11 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
     for (const std::string& e : errors) console.err << "facetc: error: " << e << "\n";
     return 1;
   }
+  if (!args.emit_strip_file.empty() && paths.size() != 1) {
+    console.err << fmt::format("facetc: error: --emit-strip writes the strip filter of one shader; the inputs name {}\n",
+                               count_of(paths.size(), "shader", "shaders"));
+    return 1;
+  }
   for (const std::string& path : paths) {
     std::vector<std::string> read;
     auto r = report_one(args, compiler, path, strip, console, json_diagnostics, read);
@@ -152,14 +178,25 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
   std::string text = args.report == ReportFormat::json   ? report::to_json(reports)
                      : args.report == ReportFormat::html ? report::to_html(reports)
                                                          : report::to_text(reports);
-  if (args.output.empty() || args.output == "-") {
+  std::vector<std::string> outputs;
+  if (!args.output.empty() && args.output != "-") outputs.push_back(args.output);
+  if (!args.emit_strip_file.empty()) outputs.push_back(args.emit_strip_file);
+  Diagnostics diags;
+  if (!outputs_spare_inputs(outputs, inputs, diags)) {
+    show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
+    return 1;
+  }
+  if (outputs.empty() || outputs.front() != args.output) {
     console.out << text;
-  } else {
-    Diagnostics diags;
-    if (!outputs_spare_inputs({args.output}, inputs, diags) || !write_file_atomically(args.output, text, diags)) {
-      show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
-      return 1;
-    }
+  } else if (!write_file_atomically(args.output, text, diags)) {
+    show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
+    return 1;
+  }
+  if (!args.emit_strip_file.empty() &&
+      !write_file_atomically(args.emit_strip_file, strip_filter_json(planned_filter(strip.filter, reports.front())),
+                             diags)) {
+    show_diagnostics(args, diags, SourceMap{}, console, json_diagnostics);
+    return 1;
   }
   return failed ? 1 : 0;
 }

@@ -5,6 +5,7 @@
 //              {"always_off": ["_DETAIL_MULX2"]}]}
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "json_input.h"
@@ -62,6 +63,20 @@ Result<variants::StripFilter> read_strip_filter(const std::string& path, SourceM
   for (size_t i = 0; i < root["strip"].size(); ++i) read_rule(root["strip"][i], fmt::format("strip[{}]", i), errors, filter);
   if (errors.failed) return failure("bad filter");
   return filter;
+}
+
+std::string strip_filter_json(const variants::StripFilter& filter) {
+  nlohmann::ordered_json rules = nlohmann::ordered_json::array();
+  for (const variants::StripRule& rule : filter.rules) {
+    auto kind = std::find_if(kKinds.begin(), kKinds.end(), [&](const auto& k) { return k.second == rule.kind; });
+    nlohmann::ordered_json r = {{kind->first, rule.keywords}};
+    bool index = !rule.pass.empty() && rule.pass.size() < 10 &&
+                 std::all_of(rule.pass.begin(), rule.pass.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (index) r["pass"] = std::stoul(rule.pass);
+    else if (!rule.pass.empty()) r["pass"] = rule.pass;
+    rules.push_back(std::move(r));
+  }
+  return nlohmann::ordered_json{{"strip", rules}}.dump(2) + "\n";
 }
 
 }  // namespace facet::tools

@@ -168,6 +168,44 @@ TEST(ReportLadderTest, MaterialsRestrictShaderFeatureSets) {
   EXPECT_TRUE(shader_feature_what_if);
 }
 
+ShaderReport stripped_report(const std::vector<variants::KeywordList>& materials, const variants::StripFilter& strip) {
+  Compiler compiler;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = compiler.load(example("Keywords.shader"), sources, diags);
+  EXPECT_TRUE(shader) << render_text(diags, sources);
+  if (!shader) return {};
+  CompileOptions options{.jobs = 2};
+  options.materials = materials;
+  options.strip = strip;
+  auto passes = compiler.select_passes(*shader, options, diags);
+  auto compiled = compiler.compile(*shader, options, sources, diags);
+  EXPECT_TRUE(compiled) << render_text(diags, sources);
+  if (!compiled) return {};
+  return build_report(*shader, *passes, *compiled, sources, {.materials = materials});
+}
+
+// The build holds only the material's shader_feature states, so holding
+// _EMISSION or the overlay at its default would leave no variant: those
+// steps are never taken. The plan's count is what the strip rules build.
+TEST(ReportStripPlanTest, StepsNeverEmptyAPassAndPredictTheStrippedBuild) {
+  const std::vector<variants::KeywordList> materials = {{"_EMISSION", "_OVERLAY_ADD"}};
+  ShaderReport r = stripped_report(materials, {});
+  StripPlan plan = strip_plan(r);
+  EXPECT_EQ(plan.programs_now, ladder(r.passes.at(0), "pass").programs);
+  ASSERT_EQ(plan.steps.size(), 2u) << "fog and debug normals: the only sets with a built default";
+  EXPECT_EQ(plan.steps[0].step.always_off, (std::vector<std::string>{"FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}));
+  EXPECT_EQ(plan.steps[1].step.always_off, (std::vector<std::string>{"FACET_DEBUG_NORMALS"}));
+  variants::StripFilter strip;
+  for (const PlannedStep& s : plan.steps) {
+    strip.rules.push_back({.kind = variants::StripKind::always_off, .keywords = s.step.always_off,
+                           .pass = std::to_string(s.pass)});
+  }
+  ShaderReport after = stripped_report(materials, strip);
+  EXPECT_EQ(ladder(after.passes.at(0), "pass").programs, plan.programs_after);
+  EXPECT_EQ(strip_plan(after).steps.size(), 0u) << "nothing left to hold";
+}
+
 TEST(ReportRenderTest, JsonTextAndHtmlCarryTheNumbers) {
   std::vector<ShaderReport> reports = {report_of(example("Keywords.shader"))};
   auto json = nlohmann::json::parse(to_json(reports));

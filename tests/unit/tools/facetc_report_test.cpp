@@ -2,6 +2,8 @@
 // bad inputs.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "facetc_test_util.h"
@@ -146,10 +148,13 @@ TEST_F(FacetcTest, ReportOfASpaceTooLargeToEnumerateCountsItExactly) {
   FacetcRun text = facetc({"--report", "Huge.shader"});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_THAT(text.out, HasSubstr("pass #1 'Huge'"));
+  // Columns that hold no data are left out: no materials were given, and the
+  // compiled rungs of a pass not enumerated are unknown.
   EXPECT_THAT(text.out, ::testing::ContainsRegex(
-                            "pass +36893488147419103232 +36893488147419103232 +- +36893488147419103232 +- +- +- +-\n"));
+                            "\n +full +after skip +reachable\n +pass +36893488147419103232 +36893488147419103232 "
+                            "+36893488147419103232\n"));
   EXPECT_THAT(text.out, ::testing::ContainsRegex(
-                            "vertex +18446744073709551616 +18446744073709551616 +- +18446744073709551616 +- +- +- +-\n"));
+                            "vertex +18446744073709551616 +18446744073709551616 +18446744073709551616\n"));
   EXPECT_THAT(text.out, HasSubstr("not enumerated: 36893488147419103232 variants are more than --max-variants allows"));
   EXPECT_THAT(text.out, HasSubstr("x2    multi_compile _ K62  [vertex fragment]"));
   EXPECT_THAT(text.out, HasSubstr("x2    multi_compile_fragment _ FRAG_ON  [fragment]"));
@@ -159,7 +164,8 @@ TEST_F(FacetcTest, ReportOfASpaceTooLargeToEnumerateCountsItExactly) {
               HasSubstr("what if: make 'multi_compile _ K0' fragment-only (_fragment) -> 9223372036854775808 programs fewer"));
   EXPECT_THAT(text.out, HasSubstr("what if: remove 'multi_compile_fragment _ FRAG_ON' -> 18446744073709551616 programs fewer"));
   // The small pass is built in full: its compiled rungs are there.
-  EXPECT_THAT(text.out, ::testing::ContainsRegex("pass #0 'Small'[^\n]*\n[^\n]*\n +pass +2 +2 +- +2 +2 +4 +3 +"));
+  EXPECT_THAT(text.out, ::testing::ContainsRegex("pass #0 'Small'[^\n]*\n[^\n]*\n +pass +2 +2 +2 +2 +4 +3 +"));
+  EXPECT_THAT(text.out, HasSubstr("(1 pass too large to enumerate is not in these figures; see its what-ifs)"));
 
   FacetcRun json = facetc({"--report=json", "Huge.shader"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
@@ -177,6 +183,146 @@ TEST_F(FacetcTest, ReportOfASpaceTooLargeToEnumerateCountsItExactly) {
   FacetcRun build = facetc({"Huge.shader", "-o", "huge.facetpkg"});
   EXPECT_EQ(build.exit_code, 1);
   EXPECT_FALSE(fs::exists(dir_ / "huge.facetpkg"));
+}
+
+// Two materials of the uber shader: a plain one and a normal-mapped,
+// emissive one. Its ShadowCaster and ForwardAdd passes keep the test small.
+constexpr const char* kUberMaterials = R"({"materials": [
+  {"name": "Plain", "shader": "Facet/StandardUber"},
+  {"name": "Glowing", "shader": "Facet/StandardUber", "keywords": ["_NORMALMAP", "_EMISSION"]}
+]})";
+
+std::string uber() { return std::string(FACET_SOURCE_DIR) + "/examples/uber/StandardUber.shader"; }
+
+uint64_t programs_of(const nlohmann::json& shader) {
+  uint64_t n = 0;
+  for (const auto& p : shader["passes"]) n += p["ladder"][0]["programs"].get<uint64_t>();
+  return n;
+}
+
+TEST_F(FacetcTest, ReportWithManifestsCompilesOnlyTheManifestsVariants) {
+  write_all(dir_ / "materials.json", kUberMaterials);
+  FacetcRun run = facetc({"--report=json", "--materials", "materials.json", "--pass", "FORWARD_DELTA", uber()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto doc = nlohmann::json::parse(run.out);
+  const auto& pass = doc["shaders"][0]["passes"][0];
+  const auto& ladder = pass["ladder"][0];
+  ASSERT_TRUE(ladder["after_materials"].is_number()) << ladder;
+  EXPECT_LT(ladder["after_materials"].get<uint64_t>(), ladder["after_skip_variants"].get<uint64_t>());
+  // The stripped ladder: what is built is what the materials use.
+  EXPECT_EQ(ladder["after_keyword_rules_and_strip"], ladder["reachable"]);
+  EXPECT_EQ(pass["variants"].size(), ladder["reachable"].get<uint64_t>());
+  // The pass declares no _EMISSION: its material combinations are {} and
+  // {_NORMALMAP}. Every other shader_feature keyword (all start with '_') is
+  // left out; the multi_compile sets stay whole.
+  size_t normal_mapped = 0;
+  for (const auto& v : pass["variants"]) {
+    for (const std::string& k : v["keywords"].get<std::vector<std::string>>()) {
+      EXPECT_TRUE(k[0] != '_' || k == "_NORMALMAP") << "a combination no material uses was built: " << v["keywords"];
+      normal_mapped += k == "_NORMALMAP";
+    }
+  }
+  EXPECT_EQ(normal_mapped * 2, pass["variants"].size());
+  FacetcRun text = facetc({"--report", "--materials", "materials.json", "--pass", "FORWARD_DELTA", uber()});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, ::testing::ContainsRegex("\n +full +after skip +materials +reachable +after strip +programs"));
+  // The text form leads with the summary of the JSON form.
+  const auto& summary = doc["shaders"][0]["summary"];
+  ASSERT_FALSE(summary["steps"].empty()) << summary;
+  EXPECT_THAT(text.out, HasSubstr(fmt::format("summary: {} programs now, {} after the ",
+                                              summary["programs_now"].get<uint64_t>(),
+                                              summary["programs_after"].get<uint64_t>())));
+  EXPECT_THAT(text.out, HasSubstr(fmt::format("  1. pass #{} '{}': {} -> {} fewer",
+                                              summary["steps"][0]["pass"].get<uint32_t>(),
+                                              summary["steps"][0]["pass_name"].get<std::string>(),
+                                              summary["steps"][0]["change"].get<std::string>(),
+                                              summary["steps"][0]["programs_saved"].get<uint64_t>())));
+
+  // --estimate predicts the same stripped build.
+  FacetcRun estimate = facetc({"--estimate", "--materials", "materials.json", "--pass", "FORWARD_DELTA", uber()});
+  ASSERT_EQ(estimate.exit_code, 0) << estimate.err;
+  EXPECT_THAT(estimate.out, HasSubstr(fmt::format("{} variants, {} programs", pass["variants"].size(),
+                                                  ladder["programs"].get<uint64_t>())));
+}
+
+TEST_F(FacetcTest, EmittedStripFedBackBuildsThePredictedPrograms) {
+  write_all(dir_ / "materials.json", kUberMaterials);
+  std::vector<std::string> common = {"--materials", "materials.json", "--pass", "ShadowCaster", "--pass",
+                                     "FORWARD_DELTA", uber()};
+  auto with = [&](std::vector<std::string> args) {
+    args.insert(args.end(), common.begin(), common.end());
+    return args;
+  };
+  FacetcRun first = facetc(with({"--report=json", "--emit-strip", "strip.json", "-o", "before.json"}));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  auto before = nlohmann::json::parse(read_all(dir_ / "before.json"))["shaders"][0];
+  const auto& summary = before["summary"];
+  EXPECT_EQ(summary["programs_now"], programs_of(before));
+  ASSERT_GE(summary["steps"].size(), 2u) << summary;
+  EXPECT_LT(summary["programs_after"].get<uint64_t>(), summary["programs_now"].get<uint64_t>());
+  uint64_t saved = 0;
+  for (const auto& step : summary["steps"]) saved += step["programs_saved"].get<uint64_t>();
+  EXPECT_EQ(summary["programs_now"].get<uint64_t>() - saved, summary["programs_after"]);
+
+  auto strip = nlohmann::json::parse(read_all(dir_ / "strip.json"));
+  ASSERT_EQ(strip["strip"].size(), summary["steps"].size());
+  EXPECT_EQ(strip["strip"][0]["always_off"], summary["steps"][0]["always_off"]);
+  EXPECT_EQ(strip["strip"][0]["pass"], summary["steps"][0]["pass"]);
+
+  FacetcRun second = facetc(with({"--report=json", "--strip", "strip.json", "-o", "after.json"}));
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  auto after = nlohmann::json::parse(read_all(dir_ / "after.json"))["shaders"][0];
+  EXPECT_EQ(programs_of(after), summary["programs_after"].get<uint64_t>());
+
+}
+
+TEST_F(FacetcTest, WhatIfsAreSortedBySavingWithoutRowsThatSaveNothing) {
+  FacetcRun run = facetc({"--report=json", example("Keywords.shader")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto doc = nlohmann::json::parse(run.out);
+  for (const auto& pass : doc["shaders"][0]["passes"]) {
+    ASSERT_FALSE(pass["what_if"].empty());
+    for (size_t i = 0; i < pass["what_if"].size(); ++i) {
+      EXPECT_GT(pass["what_if"][i]["programs_saved"].get<uint64_t>(), 0u) << pass["what_if"][i];
+      if (i > 0) {
+        EXPECT_LE(pass["what_if"][i]["programs_saved"], pass["what_if"][i - 1]["programs_saved"]);
+      }
+    }
+  }
+}
+
+TEST_F(FacetcTest, EmitStripNeedsOneShaderAndNeverReplacesAnInput) {
+  fs::create_directories(dir_ / "two");
+  fs::copy_file(example("Unlit.shader"), dir_ / "two" / "Unlit.shader");
+  fs::copy_file(example("VertexColor.shader"), dir_ / "two" / "VertexColor.shader");
+  FacetcRun two = facetc({"--report", "--emit-strip", "strip.json", "two"});
+  EXPECT_EQ(two.exit_code, 1);
+  EXPECT_THAT(two.err, HasSubstr("facetc: error: --emit-strip writes the strip filter of one shader; the inputs name "
+                                 "2 shaders"));
+  EXPECT_FALSE(fs::exists(dir_ / "strip.json"));
+
+  fs::copy_file(example("Keywords.shader"), dir_ / "Keywords.shader");
+  std::string source = read_all(dir_ / "Keywords.shader");
+  FacetcRun onto_input = facetc({"--report", "--emit-strip", "Keywords.shader", "Keywords.shader"});
+  EXPECT_EQ(onto_input.exit_code, 1);
+  EXPECT_THAT(onto_input.err, HasSubstr("Keywords.shader"));
+  EXPECT_EQ(read_all(dir_ / "Keywords.shader"), source);
+
+  FacetcRun no_report = facetc({"--emit-strip", "strip.json", "Keywords.shader"});
+  EXPECT_EQ(no_report.exit_code, 2) << "a usage error";
+  EXPECT_THAT(no_report.err, HasSubstr("--emit-strip goes with --report"));
+  EXPECT_FALSE(fs::exists(dir_ / "strip.json"));
+}
+
+TEST_F(FacetcTest, HtmlReportListsTheSlowestVariantsAndTheSummary) {
+  FacetcRun html = facetc({"--report=html", "-o", "report.html", example("Keywords.shader")});
+  ASSERT_EQ(html.exit_code, 0) << html.err;
+  std::string page = read_all(dir_ / "report.html");
+  EXPECT_THAT(page, HasSubstr("<table class=\"slowest\"><tr><th>variant keywords</th><th>compile seconds</th>"));
+  EXPECT_THAT(page, ::testing::ContainsRegex("<p class=\"caption\">The 10 slowest of 48 variants \\([0-9]+ compiled\\)"));
+  EXPECT_THAT(page, HasSubstr("<p class=\"summary\"><b>64 programs</b> now, <b>"));
+  EXPECT_THAT(page, ::testing::Not(HasSubstr("after scene needs"))) << "a column that never holds data";
+  EXPECT_THAT(page, ::testing::Not(HasSubstr("after materials"))) << "no manifest was given";
 }
 
 }  // namespace
