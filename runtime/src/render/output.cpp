@@ -1,9 +1,13 @@
 // PNG and EXR files through image_io, written atomically, and the --explain listing.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <map>
+#include <tuple>
 
 #include "facet/runtime/renderer.h"
 #include "facet/support/atomic_file.h"
+#include "facet/support/text.h"
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
@@ -34,19 +38,58 @@ Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::strin
   return write_atomically(path, frame, frame.hdr.data());
 }
 
+// --explain names each pass of each object once: its draws (numbered in
+// submission order, so the order stays visible) under one line, and a pass
+// that was never drawn once, with every reason it was skipped.
 std::string explain_text(const RenderedFrame& frame) {
-  std::string text;
+  using PassKey = std::tuple<std::string, std::string, std::string>;  // object, shader, pass
+  auto key_of = [](const DrawRecord& d) { return PassKey{d.object, d.shader, d.pass}; };
+  std::vector<PassKey> drawn_order, skipped_order;
+  std::map<PassKey, std::vector<std::pair<size_t, const DrawRecord*>>> draws;
+  std::map<PassKey, std::vector<std::string>> skipped_why;
   size_t n = 0;
   for (const DrawRecord& d : frame.draws) {
-    std::string mode = d.light_mode.empty() ? "no LightMode" : d.light_mode;
-    if (!d.drawn) {
-      text += fmt::format("   - {} '{}' pass {} ({}): not drawn: {}\n", d.object, d.shader, d.pass, mode, d.why);
+    PassKey key = key_of(d);
+    if (d.drawn) {
+      auto& list = draws[key];
+      if (list.empty()) drawn_order.push_back(key);
+      list.emplace_back(++n, &d);
       continue;
     }
-    text += fmt::format("{:4} {} '{}' pass {} ({}), queue {}{}\n", ++n, d.object, d.shader, d.pass, mode, d.queue,
-                        d.light.empty() ? "" : ", light " + d.light);
-    text += fmt::format("       variant: {}{}\n       state: {}\n       why: {}\n", join(d.keywords),
-                        d.exact ? "" : " (closest match)", d.state, d.why);
+    auto& whys = skipped_why[key];
+    if (whys.empty()) skipped_order.push_back(key);
+    if (std::find(whys.begin(), whys.end(), d.why) == whys.end()) whys.push_back(d.why);
+  }
+  std::string text;
+  for (const PassKey& key : drawn_order) {
+    const auto& list = draws[key];
+    const DrawRecord& first = *list.front().second;
+    std::string mode = first.light_mode.empty() ? "no LightMode" : first.light_mode;
+    text += fmt::format("{} '{}' pass {} ({}), queue {}: {}\n", first.object, first.shader, first.pass, mode,
+                        first.queue, count_of(list.size(), "draw", "draws"));
+    for (const auto& [number, d] : list) {
+      text += fmt::format("{:4} {}\n       variant: {}{}\n       state: {}\n       why: {}\n", number,
+                          d->light.empty() ? "without a light" : "light " + d->light, join(d->keywords),
+                          d->exact ? "" : " (closest match)", d->state, d->why);
+    }
+  }
+  bool heading = false;
+  for (const PassKey& key : skipped_order) {
+    if (draws.count(key)) continue;  // drawn elsewhere (a ShadowCaster into a shadow map)
+    if (!heading) text += "not drawn:\n";
+    heading = true;
+    const auto& [object, shader, pass] = key;
+    const DrawRecord* first = nullptr;
+    for (const DrawRecord& d : frame.draws) {
+      if (!d.drawn && key_of(d) == key) {
+        first = &d;
+        break;
+      }
+    }
+    std::string mode = first->light_mode.empty() ? "no LightMode" : first->light_mode;
+    std::string whys;
+    for (const std::string& w : skipped_why[key]) whys += (whys.empty() ? "" : "; ") + w;
+    text += fmt::format("   - {} '{}' pass {} ({}): {}\n", object, shader, pass, mode, whys);
   }
   return text;
 }
