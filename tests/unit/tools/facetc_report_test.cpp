@@ -314,6 +314,22 @@ TEST_F(FacetcTest, EmitStripNeedsOneShaderAndNeverReplacesAnInput) {
   EXPECT_FALSE(fs::exists(dir_ / "strip.json"));
 }
 
+TEST_F(FacetcTest, ReportShowsAProgressBarOnlyOnATerminal) {
+  FacetcRun piped = facetc({"--report", example("Keywords.shader"), "-o", "piped.txt"});
+  ASSERT_EQ(piped.exit_code, 0);
+  EXPECT_EQ(piped.err, "") << "no progress bar when stderr is not a terminal";
+  // script(1) gives facetc a pseudo-terminal.
+  std::string command = "cd " + shell_quote(dir_.string()) + " && script -qec " +
+                        shell_quote(shell_quote(FACETC_PATH) + " --report " + shell_quote(example("Keywords.shader")) +
+                                    " -o tty-report.txt") +
+                        " /dev/null > tty.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::string tty = read_all(dir_ / "tty.txt");
+  EXPECT_THAT(tty, HasSubstr("] 50/50 programs"));
+  EXPECT_THAT(tty, HasSubstr("\r"));
+  EXPECT_THAT(read_all(dir_ / "tty-report.txt"), HasSubstr("summary: 64 programs now"));
+}
+
 TEST_F(FacetcTest, HtmlReportListsTheSlowestVariantsAndTheSummary) {
   FacetcRun html = facetc({"--report=html", "-o", "report.html", example("Keywords.shader")});
   ASSERT_EQ(html.exit_code, 0) << html.err;
