@@ -238,6 +238,10 @@ inline constexpr uint64_t kMaxPackageBytes = 1ull << 30;
 // with an io_* diagnostic.
 Result<std::string> read_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags);
 
+// Reads and validates a .facetpkg (at most kMaxPackageBytes); its problems
+// name the file.
+Result<package::Package> read_package_file(const std::string& path, Diagnostics& diags);
+
 // Writes `bytes` to `path` through a temporary file and a rename, so that a
 // failure never leaves a partial file behind.
 Result<void> write_file_atomically(const std::string& path, std::string_view bytes, Diagnostics& diags);

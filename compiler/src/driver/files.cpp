@@ -54,4 +54,15 @@ std::string default_stdlib_dir() { return backend::default_stdlib_dir(); }
 
 std::string version_string() { return fmt::format("facet {} (glslang 12, SPIRV-Tools, SPIRV-Cross)", FACET_VERSION); }
 
+Result<package::Package> read_package_file(const std::string& path, Diagnostics& diags) {
+  auto bytes = read_file(path, kMaxPackageBytes, diags);
+  FACET_TRY(bytes);
+  auto pkg = package::read_package(std::span(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()), diags);
+  if (!pkg) {
+    for (Diagnostic& d : diags.mutable_all()) d.message = path + ": " + d.message;
+    return failure("corrupt package");
+  }
+  return pkg;
+}
+
 }  // namespace facet

@@ -57,9 +57,6 @@ std::vector<ir::Tag> lower_tags(const std::vector<ast::Tag>& tags);
 std::vector<ir::Tag> inherit_tags(const std::vector<ir::Tag>& outer, const std::vector<ir::Tag>& inner);
 // Checks known tag values (Queue).
 void check_tags(const std::vector<ast::Tag>& tags, Context& ctx);
-// The render queue a Queue tag's value names: "Geometry" (2000),
-// "Geometry+1", "Transparent-100", "2450"; nullopt when it names none.
-std::optional<int> queue_number(std::string_view value);
 // Warns about a SubShader-level LightMode tag and copies it into the
 // passes that have none (when options ask for it).
 void propagate_lightmode(const ast::SubShader& sub, const std::vector<ir::Tag>& sub_tags,

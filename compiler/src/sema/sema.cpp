@@ -4,6 +4,7 @@
 #include "facet/sema.h"
 
 #include "fixed_function.h"
+#include "facet/support/render_queue.h"
 #include "lower.h"
 
 namespace facet::sema {

@@ -1,31 +1,10 @@
 // Tags are kept as written; only the values facet interprets are checked.
-#include <charconv>
-
 #include "lower.h"
+#include "facet/support/render_queue.h"
 #include "facet/support/text.h"
 
 namespace facet::sema {
 namespace {
-
-struct NamedQueue {
-  std::string_view name;
-  int number;
-};
-constexpr NamedQueue kQueues[] = {
-    {"Background", 1000}, {"Geometry", 2000}, {"AlphaTest", 2450}, {"Transparent", 3000}, {"Overlay", 4000}};
-
-std::optional<int> integer(std::string_view s) {
-  int value = 0;
-  auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
-  return value;
-}
-
-std::vector<std::string_view> queue_names() {
-  std::vector<std::string_view> names;
-  for (const NamedQueue& q : kQueues) names.push_back(q.name);
-  return names;
-}
 
 // The part of a Queue value that is wrong, for the message and its
 // did-you-mean: the name, or the whole value when the offset is.
@@ -36,28 +15,6 @@ std::string queue_problem(std::string_view value) {
   std::string_view name = trim(value.substr(0, sign));
   return std::string(queue_number(name) ? value : name);
 }
-
-}  // namespace
-
-std::optional<int> queue_number(std::string_view value) {
-  value = trim(value);
-  if (std::optional<int> number = integer(value)) return number;
-  size_t sign = value.find_first_of("+-");
-  std::string_view name = trim(value.substr(0, sign));
-  int offset = 0;
-  if (sign != std::string_view::npos) {
-    std::string_view digits = trim(value.substr(sign + 1));
-    std::optional<int> magnitude = digits.empty() || digits[0] == '-' || digits[0] == '+' ? std::nullopt : integer(digits);
-    if (!magnitude) return std::nullopt;
-    offset = value[sign] == '-' ? -*magnitude : *magnitude;
-  }
-  for (const NamedQueue& q : kQueues) {
-    if (iequals(q.name, name)) return q.number + offset;
-  }
-  return std::nullopt;
-}
-
-namespace {
 
 std::string escape(std::string_view s) {
   std::string out;
@@ -92,7 +49,7 @@ void check_tags(const std::vector<ast::Tag>& tags, Context& ctx) {
   for (const ast::Tag& t : tags) {
     if (!iequals(t.key, "Queue")) continue;
     if (queue_number(t.value)) continue;
-    const std::vector<std::string_view> names = queue_names();
+    const std::vector<std::string_view> names = render_queue_names();
     Diagnostic& d = ctx.error(DiagId::sema_bad_queue, t.value_span, "unknown render queue '" + t.value + "'");
     if (auto best = suggest(queue_problem(t.value), names)) {
       d.note(t.value_span, "did you mean '" + std::string(*best) + "'?");

@@ -172,19 +172,6 @@ Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler,
   return out;
 }
 
-// Reads and validates a .facetpkg; its problems name the file.
-Result<package::Package> read_package_file(const std::string& input, Diagnostics& diags) {
-  auto bytes = read_file(input, kMaxPackageBytes, diags);
-  FACET_TRY(bytes);
-  auto pkg = package::read_package(
-      std::span(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()), diags);
-  if (!pkg) {
-    for (Diagnostic& d : diags.mutable_all()) d.message = input + ": " + d.message;
-    return failure("corrupt package");
-  }
-  return pkg;
-}
-
 Result<Produced> dump_package_file(const FacetcArgs& args, const std::string& input, Diagnostics& diags) {
   auto pkg = read_package_file(input, diags);
   FACET_TRY(pkg);

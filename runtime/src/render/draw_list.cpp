@@ -92,11 +92,23 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
   ShaderAsset& asset = *object.shader;
   const SelectedPass& pass = asset.passes[pass_index];
   Diagnostics diags;
+  variants::SelectOptions select;
+  if (asset.package) {  // only the variants built offline exist
+    select.available = &asset.available[pass_index];
+    select.strict = library.strict_variants();
+  }
   Result<variants::Selection> pick =
-      variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
+      variants::select_variant(pass.keywords, object.material.keywords, global, select, diags);
   std::string where = fmt::format("{}: {}: shader '{}' pass {}", scene.path, object.scene->material.json_path,
                                   asset.shader.name, record.pass);
   if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+  if (asset.package && !pick->exact) {
+    std::vector<std::string> asked = object.material.keywords;
+    asked.insert(asked.end(), global.begin(), global.end());
+    library.record_miss(fmt::format("{}: pass {}: no variant for {{{}}}; drawn with Unity's closest match {{{}}}",
+                                    asset.path, record.pass, fmt::join(asked, " "),
+                                    fmt::join(variants::all_keywords(pass.keywords, pick->key), " ")));
+  }
   bool compiled = false;
   Result<LoadedVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
   if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});

@@ -598,6 +598,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
   ShaderLibrary library(options.cache_dir, options.include_dirs);
+  library.set_strict_variants(options.strict_variants);
   Resources resources(context);
   resources.keep_pixels(options.capture != nullptr);
   Loader loader{context, scene, library, resources, {}};
@@ -875,6 +876,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   }
   frame.stats.shaders_loaded = library.loaded();
   frame.shader_files = library.files_read();
+  frame.variant_misses = library.misses();
   frame.stats.textures_loaded = resources.textures_loaded();
   frame.stats.compile_ms = library.seconds() * 1000;
   frame.stats.total_ms = ms_since(start);

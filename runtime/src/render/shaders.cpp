@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+
+#include "facet/support/render_queue.h"
+#include "facet/support/text.h"
 
 namespace facet::runtime {
 namespace {
@@ -13,6 +17,36 @@ struct Timer {
   ~Timer() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
 };
 
+bool is_package_path(const std::string& path) { return path.ends_with(".facetpkg"); }
+
+// A package's passes as the renderer's passes: name, tags, render state and
+// keyword space as the build saw them, and the stages its variants hold.
+void adopt_package(ShaderAsset& asset, package::Package pkg) {
+  asset.shader.name = pkg.shader_name;
+  asset.shader.properties = pkg.properties;
+  asset.queue = 2000;
+  for (const ir::Tag& tag : pkg.subshader_tags) {
+    if (!iequals(tag.key, "Queue")) continue;
+    if (std::optional<int> queue = queue_number(tag.value)) asset.queue = *queue;
+  }
+  for (size_t p = 0; p < pkg.passes.size(); ++p) {
+    const package::PackagePass& built = pkg.passes[p];
+    SelectedPass pass{.subshader = 0, .pass = p, .keywords = built.keywords};
+    pass.ir.kind = ir::PassKind::normal;
+    pass.ir.name = built.name;
+    pass.ir.tags = built.tags;
+    pass.ir.state = built.state;
+    pass.ir.program.emplace();
+    std::vector<variants::VariantKey>& keys = asset.available.emplace_back();
+    for (const package::PackageVariant& v : built.variants) {
+      keys.push_back(v.key);
+      for (const package::PackageStage& st : v.stages) pass.ir.program->entry_points[size_t(st.stage)] = "main";
+    }
+    asset.passes.push_back(std::move(pass));
+  }
+  asset.package = std::move(pkg);
+}
+
 }  // namespace
 
 Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
@@ -22,6 +56,14 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   asset->path = path;
   asset->files_read.insert(path);
   Diagnostics diags;
+  if (is_package_path(path)) {
+    Result<package::Package> pkg = read_package_file(path, diags);
+    if (!pkg) return unexpected(render_text(diags, asset->sources));
+    adopt_package(*asset, std::move(*pkg));
+    ShaderAsset* raw = asset.get();
+    shaders_[path] = std::move(asset);
+    return raw;
+  }
   CompileOptions load_options;
   load_options.backend.include_dirs = include_dirs_;
   Result<ir::Shader> shader = compiler_.load(path, asset->sources, diags, load_options);
@@ -53,6 +95,7 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
   }
   Timer timer{seconds_};
   const SelectedPass& selected = asset.passes[pass];
+  if (asset.package) return packaged_variant(context, asset, pass, key, compiled);
   CompileOptions options;
   options.passes = {std::to_string(selected.pass)};
   options.keywords = variants::all_keywords(selected.keywords, key);
@@ -75,6 +118,26 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
   LoadedVariant* raw = variant.get();
   asset.variants[id] = std::move(variant);
   *compiled = true;
+  return raw;
+}
+
+Result<LoadedVariant*, std::string> ShaderLibrary::packaged_variant(const Context& context, ShaderAsset& asset,
+                                                                     size_t pass, const variants::VariantKey& key,
+                                                                     bool* compiled) {
+  const std::vector<package::PackageVariant>& built = asset.package->passes[pass].variants;
+  auto found = std::find_if(built.begin(), built.end(), [&](const package::PackageVariant& v) { return v.key == key; });
+  if (found == built.end()) {
+    return unexpected(fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass,
+                                  fmt::join(variants::all_keywords(asset.passes[pass].keywords, key), " ")));
+  }
+  auto variant = std::make_unique<LoadedVariant>();
+  variant->keywords = found->keywords;
+  Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, *asset.package, *found);
+  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, pass, program.error()));
+  variant->program = std::move(*program);
+  LoadedVariant* raw = variant.get();
+  asset.variants[{pass, key}] = std::move(variant);
+  *compiled = false;  // it was built offline
   return raw;
 }
 

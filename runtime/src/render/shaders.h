@@ -3,9 +3,11 @@
 // the (pass, variant) pairs its draws need.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,8 +17,9 @@
 
 namespace facet::runtime {
 
-// A variant of one pass as the renderer holds it: its one-variant package
-// and its program on the GPU.
+// A variant of one pass as the renderer holds it: the one-variant package it
+// was compiled into (empty for a variant of a loaded .facetpkg) and its
+// program on the GPU.
 struct LoadedVariant {
   package::Package package;
   std::unique_ptr<GpuProgram> program;
@@ -31,6 +34,11 @@ struct ShaderAsset {
   int queue = 2000;                  // the SubShader's render queue (sema resolves its Queue tag)
   std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<LoadedVariant>> variants;
   std::set<std::string> files_read;  // the .shader and every file its compiled variants included
+  // Loaded from a .facetpkg: its passes' variants are all there is (nothing
+  // is compiled), and `available` lists each pass's variant keys for the
+  // selection rule.
+  std::optional<package::Package> package;
+  std::vector<std::vector<variants::VariantKey>> available;
 };
 
 class ShaderLibrary {
@@ -38,7 +46,8 @@ class ShaderLibrary {
   explicit ShaderLibrary(std::string cache_dir, std::vector<std::string> include_dirs = {})
       : cache_dir_(std::move(cache_dir)), include_dirs_(std::move(include_dirs)) {}
 
-  // Errors are the compiler's diagnostics, rendered as text.
+  // A .shader, or a .facetpkg built by facetc. Errors are the compiler's
+  // diagnostics, rendered as text.
   Result<ShaderAsset*, std::string> load(const std::string& path);
   // The variant of pass `pass` (an index into asset.passes) with this key,
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
@@ -49,12 +58,27 @@ class ShaderLibrary {
   std::vector<std::string> files_read() const;
   size_t loaded() const { return shaders_.size(); }
 
+  // How a draw picks a packaged variant: strict (no exact variant is an
+  // error naming the keyword set) or Unity's closest match, each distinct
+  // miss recorded once.
+  void set_strict_variants(bool strict) { strict_variants_ = strict; }
+  bool strict_variants() const { return strict_variants_; }
+  void record_miss(const std::string& miss) {
+    if (std::find(misses_.begin(), misses_.end(), miss) == misses_.end()) misses_.push_back(miss);
+  }
+  const std::vector<std::string>& misses() const { return misses_; }
+
  private:
+  Result<LoadedVariant*, std::string> packaged_variant(const Context& context, ShaderAsset& asset, size_t pass,
+                                                       const variants::VariantKey& key, bool* compiled);
+
   Compiler compiler_;
   std::string cache_dir_;
   std::vector<std::string> include_dirs_;
   std::map<std::string, std::unique_ptr<ShaderAsset>> shaders_;
   double seconds_ = 0;
+  bool strict_variants_ = false;
+  std::vector<std::string> misses_;
 };
 
 }  // namespace facet::runtime

@@ -305,7 +305,7 @@ struct Reader {
     }
     SceneMaterial m;
     m.json_path = path;
-    if (!j.contains("shader")) throw Bad{path, "missing key 'shader' (a .shader file)"};
+    if (!j.contains("shader")) throw Bad{path, "missing key 'shader' (a .shader file or a .facetpkg package)"};
     m.shader = resolve(text(member(j, "shader"), join(path, "shader")));
     if (!is_file(m.shader)) {
       throw Bad{join(path, "shader"), fmt::format("shader file '{}' not found", m.shader)};

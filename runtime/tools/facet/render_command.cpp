@@ -22,7 +22,7 @@ struct RenderArgs {
   std::string scene, png, exr, device, cache, depfile;
   std::vector<std::string> include_dirs;
   int width = 0, height = 0, frames = 1;
-  bool stats = false, explain = false, validation = false;
+  bool stats = false, explain = false, validation = false, strict_variants = false;
 };
 
 // A file the render reads, and what it is to the scene, for the error.
@@ -135,11 +135,13 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   }
   auto frame = runtime::render_scene(**context, *scene,
                                      {.width = a.width, .height = a.height, .cache_dir = a.cache,
-                                      .include_dirs = a.include_dirs, .frames = a.frames});
+                                      .include_dirs = a.include_dirs, .frames = a.frames,
+                                      .strict_variants = a.strict_variants});
   if (!frame) {
     err << frame.error().message << "\n";
     return 1;
   }
+  for (const std::string& miss : frame->variant_misses) err << "facet render: warning: " << miss << "\n";
   std::string rule;
   if (!a.depfile.empty()) {
     auto r = depfile_rule(a, *scene, *frame);
@@ -194,6 +196,8 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_option("-I,--include-dir", a.include_dirs, "add a folder to the #include search path of the scene's shaders");
   app.add_option("--depfile", a.depfile, "also write a make rule of every file the render read (scene, meshes, textures, shaders, includes)");
   app.add_flag("--explain", a.explain, "list every draw with its pass, variant keywords and why");
+  app.add_flag("--strict-variants", a.strict_variants,
+               "a draw whose keywords have no exact variant in a shader's package is an error");
   app.add_flag("--validation", a.validation, "enable the Vulkan validation layer; any message fails the run");
   try {
     app.parse(argc, argv);

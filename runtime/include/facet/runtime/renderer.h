@@ -36,6 +36,11 @@ struct RenderOptions {
   // Called after each frame's wait, outside its timing: a benchmark runs
   // its baseline here, so that the two alternate frame by frame.
   std::function<void(int frame)> after_frame;
+  // A scene's shaders may be packages (.facetpkg from facetc): a draw whose
+  // keywords have no exact variant in one is an error naming the keyword set
+  // when strict (Unity's strictShaderVariantMatching), else drawn with
+  // Unity's closest match and listed once in RenderedFrame::variant_misses.
+  bool strict_variants = false;
 };
 
 // One draw (or one pass that was not drawn), for --explain and tests.
@@ -80,6 +85,7 @@ struct RenderedFrame {
   std::vector<DrawRecord> draws; // in submission order; skipped passes after them
   std::vector<std::string> compiled;  // "Examples/PhongMultiLight FORWARD_DELTA: POINT", in compile order
   std::vector<std::string> shader_files;  // every .shader and include the shaders and variants drawn read, sorted
+  std::vector<std::string> variant_misses;  // distinct draws a package had no exact variant for (closest match used)
   RenderStats stats;
 };
 

@@ -1,0 +1,89 @@
+// A scene may name .facetpkg packages built by facetc instead of .shader
+// files: the runtime draws their variants as built (nothing is compiled), the
+// image is pixel-identical to the one rendered from the sources, and a draw
+// whose keywords have no exact variant in a package is drawn with Unity's
+// closest match and one warning, or is an error with --strict-variants.
+#include <nlohmann/json.hpp>
+
+#include "facetc_test_util.h"
+
+namespace facet::tools::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+class FacetRenderPackageTest : public FacetcTest {
+ protected:
+  // examples/scenes/phong_lights.json (a directional, a point and a spot
+  // light over Diffuse and PhongMultiLight objects) with its shaders
+  // replaced by `diffuse` and `phong`.
+  void write_scene(const std::string& name, const std::string& diffuse, const std::string& phong) const {
+    auto scene = nlohmann::json::parse(read_all(fs::path(FACET_SOURCE_DIR) / "examples/scenes/phong_lights.json"));
+    for (auto& object : scene["objects"]) {
+      std::string shader = object["material"]["shader"];
+      object["material"]["shader"] = shader.find("Diffuse") != std::string::npos ? diffuse : phong;
+    }
+    write_all(dir_ / name, scene.dump(2));
+  }
+
+  void build_package(const std::string& shader, const std::string& out, std::vector<std::string> extra = {}) const {
+    std::vector<std::string> args = {example(shader), "-o", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    FacetcRun run = facetc(args);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+};
+
+TEST_F(FacetRenderPackageTest, ASceneOfPackagesIsPixelIdenticalToTheSceneOfItsShaders) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  build_package("PhongMultiLight.shader", "Phong.facetpkg");
+  write_scene("sources.json", example("Diffuse.shader"), example("PhongMultiLight.shader"));
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--validation", "--stats"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  FacetcRun packages = facet_render({"packages.json", "-o", "packages.png", "--validation", "--stats", "--explain"});
+  ASSERT_EQ(packages.exit_code, 0) << packages.err;
+  EXPECT_EQ(packages.err, "") << "every draw found its exact variant";
+  EXPECT_THAT(sources.out, HasSubstr("compiled: Examples/PhongMultiLight"));
+  EXPECT_THAT(packages.out, HasSubstr("variants compiled: 0,")) << "a package's variants are built already";
+  EXPECT_THAT(packages.out, HasSubstr("'Examples/PhongMultiLight' pass 1 FORWARD_DELTA (ForwardAdd)"));
+  std::string a = read_all(dir_ / "sources.png"), b = read_all(dir_ / "packages.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the two images differ";
+}
+
+TEST_F(FacetRenderPackageTest, AMissingVariantIsTheClosestMatchWithOneWarningOrAStrictError) {
+  // The ForwardAdd pass without its point-light variants.
+  write_all(dir_ / "strip.json", R"({"strip": [{"always_off": ["POINT"], "pass": "FORWARD_DELTA"}]})");
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  build_package("PhongMultiLight.shader", "Phong.facetpkg", {"--strip", "strip.json"});
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+
+  FacetcRun closest = facet_render({"packages.json", "-o", "closest.png", "--validation"});
+  ASSERT_EQ(closest.exit_code, 0) << closest.err;
+  const std::string miss = "facet render: warning: Phong.facetpkg: pass 1 FORWARD_DELTA: no variant for {POINT}; "
+                           "drawn with Unity's closest match {";
+  EXPECT_THAT(closest.err, HasSubstr(miss));
+  size_t first = closest.err.find(miss);
+  EXPECT_EQ(closest.err.find(miss, first + 1), std::string::npos) << "two objects miss the same variant: one warning";
+
+  FacetcRun strict = facet_render({"packages.json", "-o", "strict.png", "--strict-variants"});
+  EXPECT_EQ(strict.exit_code, 1);
+  EXPECT_THAT(strict.err, HasSubstr("POINT")) << strict.err;
+  EXPECT_FALSE(fs::exists(dir_ / "strict.png"));
+}
+
+TEST_F(FacetRenderPackageTest, ACorruptPackageIsAnErrorNamingTheFile) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  std::string bytes = read_all(dir_ / "Diffuse.facetpkg");
+  write_all(dir_ / "Phong.facetpkg", bytes.substr(0, bytes.size() / 2));
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+  FacetcRun run = facet_render({"packages.json", "-o", "out.png"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("Phong.facetpkg: ")) << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+}  // namespace
+}  // namespace facet::tools::testing
