@@ -8,6 +8,7 @@
 
 #include "facet/markup.h"
 #include "facet/report.h"
+#include "ladder_columns.h"
 #include "facet/support/text.h"
 
 namespace facet::report {
@@ -55,36 +56,14 @@ std::string set_label(const KeywordSetRow& s) {
   return words;
 }
 
-struct Column {
-  const char* header;
-  std::string (*value)(const Ladder&);
-};
-
-// The ladder's columns that hold data for this pass: the material rung only
-// with manifests, the compiled rungs only when the pass was enumerated.
-std::vector<Column> ladder_columns(const PassReport& p) {
-  std::vector<Column> columns = {{"full", [](const Ladder& l) { return l.full.to_string(); }},
-                                 {"after skip_variants", [](const Ladder& l) { return l.after_skip.to_string(); }}};
-  bool materials = std::any_of(p.ladders.begin(), p.ladders.end(), [](const Ladder& l) { return l.has_materials; });
-  if (materials) columns.push_back({"after materials", [](const Ladder& l) { return l.after_materials.to_string(); }});
-  columns.push_back({"reachable", [](const Ladder& l) { return l.reachable.to_string(); }});
-  if (p.enumerated) {
-    columns.push_back({"after keyword_rule + --strip", [](const Ladder& l) { return std::to_string(l.after_strip); }});
-    columns.push_back({"programs", [](const Ladder& l) { return std::to_string(l.programs); }});
-    columns.push_back({"unique after preprocessing", [](const Ladder& l) { return std::to_string(l.unique_tokens); }});
-    columns.push_back({"unique SPIR-V", [](const Ladder& l) { return std::to_string(l.unique_spirv); }});
-  }
-  return columns;
-}
-
 std::string ladder_table(const PassReport& p) {
-  std::vector<Column> columns = ladder_columns(p);
+  std::vector<LadderColumn> columns = ladder_columns(p);
   std::string t = "<table class=\"ladder\"><tr><th></th>";
-  for (const Column& c : columns) t += fmt::format("<th>{}</th>", xml_escape(c.header));
+  for (const LadderColumn& c : columns) t += fmt::format("<th>{}</th>", xml_escape(c.long_header));
   t += "</tr>\n";
   for (const Ladder& l : p.ladders) {
     t += fmt::format("<tr><th>{}</th>", xml_escape(l.scope));
-    for (const Column& c : columns) t += fmt::format("<td>{}</td>", c.value(l));
+    for (const LadderColumn& c : columns) t += fmt::format("<td>{}</td>", c.value(l));
     t += "</tr>\n";
   }
   t += "</table>\n";

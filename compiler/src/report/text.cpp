@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "facet/report.h"
+#include "ladder_columns.h"
 #include "facet/support/text.h"
 
 namespace facet::report {
@@ -15,36 +16,14 @@ std::string set_words(const KeywordSetRow& s) {
   return out;
 }
 
-struct Column {
-  const char* header;
-  std::string (*value)(const Ladder&);
-};
-
-// The ladder's columns that hold data for this pass: the material rung only
-// with manifests, the compiled rungs only when the pass was enumerated.
-std::vector<Column> ladder_columns(const PassReport& p) {
-  std::vector<Column> columns = {{"full", [](const Ladder& l) { return l.full.to_string(); }},
-                                 {"after skip", [](const Ladder& l) { return l.after_skip.to_string(); }}};
-  bool materials = std::any_of(p.ladders.begin(), p.ladders.end(), [](const Ladder& l) { return l.has_materials; });
-  if (materials) columns.push_back({"materials", [](const Ladder& l) { return l.after_materials.to_string(); }});
-  columns.push_back({"reachable", [](const Ladder& l) { return l.reachable.to_string(); }});
-  if (p.enumerated) {
-    columns.push_back({"after strip", [](const Ladder& l) { return std::to_string(l.after_strip); }});
-    columns.push_back({"programs", [](const Ladder& l) { return std::to_string(l.programs); }});
-    columns.push_back({"unique pp", [](const Ladder& l) { return std::to_string(l.unique_tokens); }});
-    columns.push_back({"unique spv", [](const Ladder& l) { return std::to_string(l.unique_spirv); }});
-  }
-  return columns;
-}
-
 void ladder_table(const PassReport& p, std::string& out) {
-  std::vector<Column> columns = ladder_columns(p);
+  std::vector<LadderColumn> columns = ladder_columns(p);
   out += fmt::format("  {:<10}", "");
-  for (const Column& c : columns) out += fmt::format(" {:>12}", c.header);
+  for (const LadderColumn& c : columns) out += fmt::format(" {:>12}", c.short_header);
   out += "\n";
   for (const Ladder& l : p.ladders) {
     out += fmt::format("  {:<10}", l.scope);
-    for (const Column& c : columns) out += fmt::format(" {:>12}", c.value(l));
+    for (const LadderColumn& c : columns) out += fmt::format(" {:>12}", c.value(l));
     out += "\n";
   }
   if (!p.enumerated) {
