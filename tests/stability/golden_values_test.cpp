@@ -88,7 +88,7 @@ TEST(GoldenValuesTest, EveryModelMatchesItsStoredValues) {
   }
 }
 
-// A change of 1e-5 in the roughness a model is evaluated at (a plausible
+// A roughness 1e-4 (relative) off the one a model should be evaluated at (a plausible
 // refactoring slip, such as a clamp moved) is caught for every model with a
 // roughness-dependent term.
 TEST(GoldenValuesPlantedBugTest, ARoughnessOffByOneInTenThousandIsCaught) {

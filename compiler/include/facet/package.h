@@ -20,7 +20,7 @@ namespace facet::package {
 
 // 3: the build record (shard i of N, build id); 2: reflections shared
 // between stages (1: inline).
-inline constexpr uint32_t kFormatVersion = 3;
+inline constexpr uint32_t kFormatVersion = 4;
 
 struct PackageStage {
   Stage stage = Stage::vertex;

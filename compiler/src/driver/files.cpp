@@ -57,11 +57,13 @@ std::string version_string() { return fmt::format("facet {} (glslang 12, SPIRV-T
 Result<package::Package> read_package_file(const std::string& path, Diagnostics& diags) {
   auto bytes = read_file(path, kMaxPackageBytes, diags);
   FACET_TRY(bytes);
-  auto pkg = package::read_package(std::span(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()), diags);
-  if (!pkg) {
-    for (Diagnostic& d : diags.mutable_all()) d.message = path + ": " + d.message;
-    return failure("corrupt package");
+  Diagnostics read;  // only the reader's messages get the file's name
+  auto pkg = package::read_package(std::span(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()), read);
+  for (Diagnostic& d : read.mutable_all()) {
+    if (!pkg) d.message = path + ": " + d.message;
+    diags.push(std::move(d));
   }
+  if (!pkg) return failure("corrupt package");
   return pkg;
 }
 

@@ -301,7 +301,47 @@ bool expect_pass_count(Decoder& d, size_t min_size, std::string_view what, size_
   return d.ok();
 }
 
-variants::KeywordSpace decode_keyword_space(Decoder& d) {
+// Format 4: keyword_rule pragmas, the curated combinations of Unity's
+// shortcuts and their unreachable keywords, each checked against the sets.
+void decode_selection_rules(Decoder& d, variants::KeywordSpace& space) {
+  uint32_t rules = d.count(1 + 4 + 4, "keyword rule");
+  for (uint32_t i = 0; i < rules && d.ok(); ++i) {
+    variants::KeywordRule rule;
+    rule.kind = variants::RuleKind(d.enum_byte(uint8_t(variants::RuleKind::implies), "keyword rule kind"));
+    rule.keyword = d.str();
+    rule.others = d.strs("keyword rule keyword");
+    space.rules.push_back(std::move(rule));
+  }
+  uint32_t combinations = d.count(4 + 4 + 4, "keyword combination list");
+  for (uint32_t i = 0; i < combinations && d.ok(); ++i) {
+    variants::KeywordCombinations c;
+    uint64_t at = d.offset();
+    uint32_t sets = d.count(4, "combined keyword set");
+    for (uint32_t k = 0; k < sets && d.ok(); ++k) {
+      uint32_t set = d.u32();
+      if (d.ok() && (set >= space.sets.size() || (!c.sets.empty() && set <= c.sets.back()))) {
+        d.fail_at(at, "a combination names keyword set " + std::to_string(set) + " (sets ascending, below " +
+                          std::to_string(space.sets.size()) + ")");
+      }
+      c.sets.push_back(set);
+    }
+    uint32_t choices = d.count(4, "keyword combination");
+    for (uint32_t k = 0; k < choices && d.ok(); ++k) {
+      at = d.offset();
+      std::vector<uint32_t> choice = d.u32s("keyword choice");
+      if (!d.ok()) break;
+      bool fits = choice.size() == c.sets.size();
+      for (size_t j = 0; fits && j < choice.size(); ++j) fits = choice[j] < space.sets[c.sets[j]].keywords.size();
+      if (!fits) d.fail_at(at, "a keyword combination does not match its sets");
+      c.choices.push_back(std::move(choice));
+    }
+    c.pragma = d.str();
+    space.combinations.push_back(std::move(c));
+  }
+  space.unreachable_keywords = d.strs("unreachable keyword");
+}
+
+variants::KeywordSpace decode_keyword_space(Decoder& d, uint32_t version) {
   variants::KeywordSpace space;
   uint32_t n = d.count(kKeywordSetMinSize, "keyword set");
   space.sets.resize(n);
@@ -315,12 +355,13 @@ variants::KeywordSpace decode_keyword_space(Decoder& d) {
   }
   space.dynamic_branch_keywords = d.strs("dynamic_branch keyword");
   space.skip_variants = d.strs("skip_variants keyword");
+  if (version >= 4) decode_selection_rules(d, space);
   return space;
 }
 
-void decode_keywords(Decoder& d, std::vector<PackagePass>& passes) {
+void decode_keywords(Decoder& d, std::vector<PackagePass>& passes, uint32_t version) {
   if (!expect_pass_count(d, kKeywordSpaceMinSize, "keyword space", passes.size())) return;
-  for (size_t i = 0; i < passes.size() && d.ok(); ++i) passes[i].keywords = decode_keyword_space(d);
+  for (size_t i = 0; i < passes.size() && d.ok(); ++i) passes[i].keywords = decode_keyword_space(d, version);
 }
 
 // The reflections a format-2 variants section shares between stages.
@@ -410,7 +451,7 @@ Package decode_sections(std::span<const uint8_t> bytes, const SectionTable& tabl
   p.passes = decode_passes(passes);
   passes.expect_end("passes");
   Decoder keywords = section(bytes, table, SectionId::keywords, ctx);
-  decode_keywords(keywords, p.passes);
+  decode_keywords(keywords, p.passes, codec::get_u32(bytes, codec::kVersionOffset));
   keywords.expect_end("keywords");
   // Blobs before variants, whose blob indices they bound.
   Decoder blobs = section(bytes, table, SectionId::blobs, ctx);

@@ -123,6 +123,22 @@ void encode_keywords(Encoder& e, const std::vector<PackagePass>& passes) {
     }
     e.strs(space.dynamic_branch_keywords);
     e.strs(space.skip_variants);
+    // Format 4: what draw-time selection needs beyond the sets.
+    e.count(space.rules.size());
+    for (const variants::KeywordRule& rule : space.rules) {
+      e.u8(uint8_t(rule.kind));
+      e.str(rule.keyword);
+      e.strs(rule.others);
+    }
+    e.count(space.combinations.size());
+    for (const variants::KeywordCombinations& c : space.combinations) {
+      e.count(c.sets.size());
+      for (size_t set : c.sets) e.u32(uint32_t(set));
+      e.count(c.choices.size());
+      for (const std::vector<uint32_t>& choice : c.choices) e.u32s(choice);
+      e.str(c.pragma);
+    }
+    e.strs(space.unreachable_keywords);
   }
 }
 

@@ -127,7 +127,7 @@ ShaderReport build_report(const ir::Shader& shader, const std::vector<SelectedPa
       pr.what_ifs = counted_what_ifs(sel, options, compiles ? pr.compile_seconds / double(compiles) : 0);
     } else {
       pr.what_ifs = what_ifs(sel, compiled.programs, p, pr.compile_seconds, options);
-      pr.strip_steps = strip_steps(sel, pkg.passes[p], compiled.programs, p);
+      pr.strip_steps = strip_steps(sel, pkg.passes[p], compiled.programs, p, options);
     }
     sort_by_saving(pr.what_ifs);
     report.compile_seconds += pr.compile_seconds;

@@ -19,10 +19,11 @@ std::string set_spelling(const variants::KeywordSet& set);
 // Up to `max_steps` removals of one keyword set each (the set held in its
 // default state), each the best given those before it, counted from the
 // build's variants of the pass exactly as a build with the strip rules
-// would enumerate them; a step that would leave no variant is never taken.
+// would enumerate them; a step that would leave no variant, or turn off a
+// keyword a manifest's material enables, is never taken.
 std::vector<StripStep> strip_steps(const SelectedPass& pass, const package::PackagePass& built,
                                    const std::vector<ProgramRecord>& records, uint32_t pass_index,
-                                   size_t max_steps = 3);
+                                   const ReportOptions& options, size_t max_steps = 3);
 
 // The same changes for a pass too large to enumerate, counted from its
 // keyword sets: stage programs fewer, before any deduplication (so an upper

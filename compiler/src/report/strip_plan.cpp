@@ -24,24 +24,32 @@ struct BuiltPass {
   std::map<CompileId, double> compile_seconds;
 };
 
+// A compile that another pass also needs is not saved by any step of this
+// pass, so its seconds are left out.
 BuiltPass built_pass(const SelectedPass& pass, const package::PackagePass& built,
                      const std::vector<ProgramRecord>& records, uint32_t pass_index) {
   BuiltPass out;
   std::map<std::pair<int, std::vector<std::string>>, const ProgramRecord*> record_of;
+  std::set<CompileId> used_elsewhere;
+  for (const ProgramRecord& r : records) {
+    if (r.pass != pass_index) used_elsewhere.insert({int(r.stage), r.token_hash});
+  }
   for (const ProgramRecord& r : records) {
     if (r.pass != pass_index) continue;
     record_of.emplace(std::make_pair(int(r.stage), r.keywords), &r);
-    if (r.compiled) out.compile_seconds[{int(r.stage), r.token_hash}] += r.seconds;
+    CompileId id{int(r.stage), r.token_hash};
+    if (r.compiled && !used_elsewhere.count(id)) out.compile_seconds[id] += r.seconds;
   }
-  std::map<std::pair<int, std::vector<std::string>>, uint32_t> program_ids;
+  // Programs as the build plans them: one per (stage, the key projected on it).
+  std::map<std::pair<int, variants::VariantKey>, uint32_t> program_ids;
   for (const package::PackageVariant& v : built.variants) {
     out.variant_keywords.push_back(&v.keywords);
     std::vector<uint32_t>& programs = out.variant_programs.emplace_back();
     for (const package::PackageStage& st : v.stages) {
-      auto key = std::make_pair(int(st.stage), variants::stage_keywords(pass.keywords, v.key, st.stage));
+      auto key = std::make_pair(int(st.stage), variants::project(pass.keywords, v.key, st.stage));
       auto [it, added] = program_ids.emplace(key, uint32_t(program_ids.size()));
       if (added) {
-        auto r = record_of.find(key);
+        auto r = record_of.find({int(st.stage), variants::stage_keywords(pass.keywords, v.key, st.stage)});
         out.program_compile.push_back({int(st.stage), r == record_of.end() ? 0 : r->second->token_hash});
       }
       programs.push_back(it->second);
@@ -90,6 +98,18 @@ std::vector<std::string> non_default_keywords(const variants::KeywordSet& set) {
   return out;
 }
 
+// A keyword a manifest's material enables is in use: a strip rule that
+// turns it off would take that material's variants away.
+bool used_by_materials(const std::vector<std::string>& keywords, const ReportOptions& options) {
+  if (!options.materials) return false;
+  for (const variants::KeywordList& material : *options.materials) {
+    for (const std::string& k : keywords) {
+      if (std::find(material.begin(), material.end(), k) != material.end()) return true;
+    }
+  }
+  return false;
+}
+
 bool better(const StripStep& a, const StripStep& b) {
   if (a.programs_saved != b.programs_saved) return a.programs_saved > b.programs_saved;
   return a.seconds_saved > b.seconds_saved;
@@ -99,13 +119,13 @@ bool better(const StripStep& a, const StripStep& b) {
 
 std::vector<StripStep> strip_steps(const SelectedPass& pass, const package::PackagePass& built,
                                    const std::vector<ProgramRecord>& records, uint32_t pass_index,
-                                   size_t max_steps) {
+                                   const ReportOptions& options, size_t max_steps) {
   BuiltPass programs = built_pass(pass, built, records, pass_index);
   std::vector<StripStep> candidates;
   std::set<std::vector<std::string>> seen;
   for (const variants::KeywordSet& set : pass.keywords.sets) {
     std::vector<std::string> off = non_default_keywords(set);
-    if (off.empty() || !seen.insert(off).second) continue;
+    if (off.empty() || !seen.insert(off).second || used_by_materials(off, options)) continue;
     bool has_off = std::find(set.keywords.begin(), set.keywords.end(), "") != set.keywords.end();
     std::string held = has_off ? "off" : "at " + set.keywords.front();
     candidates.push_back({.change = fmt::format("hold '{}' {} (always_off {})", set_spelling(set), held,

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -244,6 +245,12 @@ std::optional<std::string> choose_mode(const RawArgs& raw, FacetcArgs& args) {
   return std::nullopt;
 }
 
+// Two spellings of one path ("r.json", "./r.json"), whether or not it exists.
+bool same_path(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+}
+
 std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
   if (args.inputs.empty()) return "no input files";
   if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report &&
@@ -258,7 +265,9 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
     return "--materials and --strip apply to packages, --report, --estimate and --check";
   }
   if (!raw.emit_strip.empty() && args.mode != Mode::report) return "--emit-strip goes with --report";
-  if (!raw.emit_strip.empty() && raw.emit_strip == args.output) return "--emit-strip and -o name the same file";
+  if (!raw.emit_strip.empty() && !args.output.empty() && same_path(raw.emit_strip, args.output)) {
+    return "--emit-strip and -o name the same file";
+  }
   if ((!raw.junit.empty() || !raw.sarif.empty()) && args.mode != Mode::check) {
     return "--junit and --sarif go with --check";
   }

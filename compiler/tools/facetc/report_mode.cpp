@@ -52,8 +52,8 @@ namespace {
 // is reported from its counts, with only its default variant compiled.
 bool too_large_to_enumerate(const SelectedPass& pass, const CompileOptions& options) {
   if (options.max_variants_per_pass == 0) return false;
-  variants::VariantCounts counts = variants::count_variants(pass.keywords);
-  const BigCount& built = options.build_unreachable ? counts.after_skip : counts.reachable;
+  variants::VariantCounts counts = variants::count_variants(pass.keywords, {.materials = options.materials});
+  const BigCount& built = options.build_unreachable ? counts.after_materials : counts.reachable;
   return built > BigCount(options.max_variants_per_pass);
 }
 

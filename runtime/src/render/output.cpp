@@ -47,6 +47,7 @@ std::string explain_text(const RenderedFrame& frame) {
   std::vector<PassKey> drawn_order, skipped_order;
   std::map<PassKey, std::vector<std::pair<size_t, const DrawRecord*>>> draws;
   std::map<PassKey, std::vector<std::string>> skipped_why;
+  std::map<PassKey, const DrawRecord*> first_skipped;
   size_t n = 0;
   for (const DrawRecord& d : frame.draws) {
     PassKey key = key_of(d);
@@ -57,7 +58,10 @@ std::string explain_text(const RenderedFrame& frame) {
       continue;
     }
     auto& whys = skipped_why[key];
-    if (whys.empty()) skipped_order.push_back(key);
+    if (whys.empty()) {
+      skipped_order.push_back(key);
+      first_skipped[key] = &d;
+    }
     if (std::find(whys.begin(), whys.end(), d.why) == whys.end()) whys.push_back(d.why);
   }
   std::string text;
@@ -79,13 +83,7 @@ std::string explain_text(const RenderedFrame& frame) {
     if (!heading) text += "not drawn:\n";
     heading = true;
     const auto& [object, shader, pass] = key;
-    const DrawRecord* first = nullptr;
-    for (const DrawRecord& d : frame.draws) {
-      if (!d.drawn && key_of(d) == key) {
-        first = &d;
-        break;
-      }
-    }
+    const DrawRecord* first = first_skipped[key];
     std::string mode = first->light_mode.empty() ? "no LightMode" : first->light_mode;
     std::string whys;
     for (const std::string& w : skipped_why[key]) whys += (whys.empty() ? "" : "; ") + w;

@@ -26,7 +26,11 @@ TEST(AccuracyBudgetTest, EveryMeasuredApproximationStaysWithinItsBudget) {
     ASSERT_TRUE(budget) << r.id << " is measured but has no budget";
     EXPECT_TRUE(std::isfinite(r.error)) << r.id;
     EXPECT_LE(r.error, *budget) << r.id << " (" << r.metric << "): " << r.detail;
-    EXPECT_GE(r.error, *budget / 2) << r.id << ": the budget is loose; tighten it to the new error + 10 %";
+    // An exact form's error is the study's quadrature noise (Lambert,
+    // normalised Phong): only its ceiling is held.
+    if (r.error >= 1e-3) {
+      EXPECT_GE(r.error, *budget / 2) << r.id << ": the budget is loose; tighten it to the new error + 10 %";
+    }
     ++checked;
   }
   EXPECT_EQ(checked, 26u);

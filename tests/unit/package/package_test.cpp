@@ -44,8 +44,10 @@ auto fields(const ir::RenderState& s) {
                   s.offset_units, s.blend, s.blend_op, s.color_mask, s.stencil);
 }
 auto fields(const variants::KeywordSet& s) { return std::tie(s.directive, s.local, s.stages, s.keywords, s.pragma); }
+auto fields(const variants::KeywordRule& r) { return std::tie(r.kind, r.keyword, r.others); }
+auto fields(const variants::KeywordCombinations& c) { return std::tie(c.sets, c.choices, c.pragma); }
 auto fields(const variants::KeywordSpace& s) {
-  return std::tie(s.sets, s.dynamic_branch_keywords, s.skip_variants);
+  return std::tie(s.sets, s.dynamic_branch_keywords, s.skip_variants, s.rules, s.combinations, s.unreachable_keywords);
 }
 auto fields(const StageVariable& v) { return std::tie(v.name, v.semantic, v.location, v.type, v.array_size); }
 auto fields(const BlockMember& m) {
@@ -191,6 +193,11 @@ variants::KeywordSpace rich_keywords() {
   };
   space.dynamic_branch_keywords = {"_DYN_A", "_DYN_B"};
   space.skip_variants = {"FOG_EXP", "_B"};
+  // Format 4: what draw-time selection needs beyond the sets.
+  space.rules = {{variants::RuleKind::implies, "_NORMALMAP", {"FOG_LINEAR"}, span(12)},
+                 {variants::RuleKind::excludes, "SHADOWS_ON", {"_NORMALMAP", "FOG_EXP"}, {}}};
+  space.combinations = {{{0, 2}, {{0, 0}, {1, 1}, {2, 0}}, "multi_compile_fwdbase", span(13)}};
+  space.unreachable_keywords = {"SHADOWS_ON"};
   return space;
 }
 
@@ -373,6 +380,17 @@ TEST_F(PackageRoundTripTest, DeduplicateBlobsMergesAndDropsUnused) {
   EXPECT_EQ(p.passes[0].variants[0].stages[0].blob, 0u);
   EXPECT_EQ(p.passes[0].variants[0].stages[1].blob, 0u);
   EXPECT_EQ(p.passes[0].variants[0].stages[2].blob, 1u);
+}
+
+// Format 4's keyword combinations must name sets of the space and fit them.
+TEST_F(PackageRoundTripTest, ACombinationOutsideItsSetsIsNotRead) {
+  Package p = rich_package();
+  p.passes[0].keywords.combinations[0].sets = {0, 9};
+  EXPECT_NE(read_error(write_package(p)).find("a combination names keyword set 9 (sets ascending, below 4)"),
+            std::string::npos);
+  p = rich_package();
+  p.passes[0].keywords.combinations[0].choices[1] = {1, 7};
+  EXPECT_NE(read_error(write_package(p)).find("a keyword combination does not match its sets"), std::string::npos);
 }
 
 // Packages that break an invariant are written, but neither validated nor read.
@@ -637,7 +655,7 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   p.passes[0].variants = {{{{1}}, {"_ON"}, {{Stage::fragment, 0, {}}}}};
   p.spirv_blobs = {{}};
   const char* expected = R"({
-  "format_version": 3,
+  "format_version": 4,
   "shader": {
     "name": "S",
     "lod": 0,

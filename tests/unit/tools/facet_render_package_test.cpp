@@ -74,6 +74,52 @@ TEST_F(FacetRenderPackageTest, AMissingVariantIsTheClosestMatchWithOneWarningOrA
   EXPECT_FALSE(fs::exists(dir_ / "strict.png"));
 }
 
+// A package keeps the pass's keyword_rule pragmas, so that draw-time
+// selection applies `implies` as it does for the shader: a material with
+// A_ON draws the A_ON B_ON variant from either.
+TEST_F(FacetRenderPackageTest, KeywordRulesSelectTheSameVariantFromAPackage) {
+  write_all(dir_ / "Implies.shader", R"(Shader "Test/Implies" {
+  SubShader { Pass {
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    #pragma shader_feature _ A_ON
+    #pragma shader_feature _ B_ON
+    #pragma keyword_rule implies A_ON B_ON
+    #include "UnityCG.cginc"
+    float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+    float4 frag() : SV_Target {
+      float4 c = float4(0.2, 0.2, 0.2, 1);
+    #ifdef A_ON
+      c.r = 1;
+    #endif
+    #ifdef B_ON
+      c.g = 1;
+    #endif
+      return c;
+    }
+    ENDCG
+  } }
+}
+)");
+  write_all(dir_ / "tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  auto scene = [](const std::string& shader) {
+    return R"({"width": 8, "height": 8, "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0]},
+      "objects": [{"mesh": "tri.obj", "material": {"shader": ")" + shader + R"(", "keywords": ["A_ON"]}}]})";
+  };
+  write_all(dir_ / "source.json", scene("Implies.shader"));
+  write_all(dir_ / "package.json", scene("Implies.facetpkg"));
+  FacetcRun build = facetc({"Implies.shader", "-o", "Implies.facetpkg"});
+  ASSERT_EQ(build.exit_code, 0) << build.err;
+  FacetcRun source = facet_render({"source.json", "-o", "source.png", "--explain"});
+  ASSERT_EQ(source.exit_code, 0) << source.err;
+  FacetcRun package = facet_render({"package.json", "-o", "package.png", "--explain", "--strict-variants"});
+  ASSERT_EQ(package.exit_code, 0) << package.err;
+  EXPECT_THAT(source.out, HasSubstr("variant: A_ON B_ON\n"));
+  EXPECT_THAT(package.out, HasSubstr("variant: A_ON B_ON\n"));
+  EXPECT_TRUE(read_all(dir_ / "source.png") == read_all(dir_ / "package.png"));
+}
+
 TEST_F(FacetRenderPackageTest, ACorruptPackageIsAnErrorNamingTheFile) {
   build_package("Diffuse.shader", "Diffuse.facetpkg");
   std::string bytes = read_all(dir_ / "Diffuse.facetpkg");

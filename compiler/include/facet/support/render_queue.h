@@ -4,6 +4,7 @@
 #pragma once
 
 #include <charconv>
+#include <climits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -46,7 +47,10 @@ inline std::optional<int> queue_number(std::string_view value) {
     offset = value[sign] == '-' ? -*magnitude : *magnitude;
   }
   for (const NamedQueue& q : kRenderQueues) {
-    if (iequals(q.name, name)) return q.number + offset;
+    if (!iequals(q.name, name)) continue;
+    long long queue = (long long)q.number + offset;  // no int overflow for "Overlay+2147483647"
+    if (queue < INT_MIN || queue > INT_MAX) return std::nullopt;
+    return int(queue);
   }
   return std::nullopt;
 }
