@@ -27,25 +27,34 @@ using test_support::write_gltf_sample;
 using test_support::write_scene;
 using Buffer = GltfSampleOptions::Buffer;
 
-std::string unlit_texture_shader() {
-  std::filesystem::path path = test_dir() / "GltfUnlitTexture.shader";
-  std::ofstream(path) << R"(Shader "Test/GltfUnlitTexture" {
-    Properties { _MainTex ("Texture", 2D) = "white" {} _Color ("Color", Color) = (1, 1, 1, 1) }
+// A shader that shows one texture property through `show` (an HLSL
+// expression of its texel `t`), unlit.
+std::string texture_shader(const std::string& name, const std::string& property, const std::string& show) {
+  std::filesystem::path path = test_dir() / (name + ".shader");
+  std::ofstream(path) << "Shader \"Test/" << name << "\" {\n    Properties { " << property
+                      << R"( ("Texture", 2D) = "white" {} _Color ("Color", Color) = (1, 1, 1, 1) }
     SubShader { Pass {
         CGPROGRAM
         #pragma vertex vert
         #pragma fragment frag
         #include "UnityCG.cginc"
-        sampler2D _MainTex; float4 _MainTex_ST; float4 _Color;
+        sampler2D )" << property << "; float4 " << property << R"(_ST; float4 _Color;
         struct appdata { float4 vertex : POSITION; float2 uv : TEXCOORD0; };
         struct v2f { float4 pos : SV_POSITION; float2 uv : TEXCOORD0; };
-        v2f vert(appdata v) { v2f o; o.pos = UnityObjectToClipPos(v.vertex); o.uv = TRANSFORM_TEX(v.uv, _MainTex); return o; }
-        fixed4 frag(v2f i) : SV_Target { return tex2D(_MainTex, i.uv) * _Color; }
+        v2f vert(appdata v) {
+            v2f o;
+            o.pos = UnityObjectToClipPos(v.vertex);
+            o.uv = TRANSFORM_TEX(v.uv, )" << property << R"();
+            return o;
+        }
+        fixed4 frag(v2f i) : SV_Target { float4 t = tex2D()" << property << ", i.uv); return " << show << R"(; }
         ENDCG
     } }
 })";
   return path.string();
 }
+
+std::string unlit_texture_shader() { return texture_shader("GltfUnlitTexture", "_MainTex", "t * _Color"); }
 
 std::string gltf_object(const std::string& mesh, const std::string& shader, const std::string& extra = "") {
   return R"([{"mesh": ")" + mesh + R"(", "gltf_materials": true)" + extra + R"(, "material": {"shader": ")" + shader +
@@ -204,6 +213,30 @@ TEST_F(GltfRender, TheEmissionTextureShowsThroughTheStandardShader) {
   json.insert(1, R"("ambient": [0, 0, 0], )");
   RenderedFrame frame = render("standard", json);
   expect_quadrants(frame);
+}
+
+// glTF's roughness (G) and metallic (B), with the factors, become Unity's
+// metallic (R) and smoothness (A); the shader shows them as red and green.
+TEST_F(GltfRender, TheMetallicRoughnessTextureBecomesUnitysMetallicGlossMap) {
+  std::string mesh = write_gltf_sample(test_dir(), "metal", {.edit = [](nlohmann::json& g, std::string&) {
+    g["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.5;
+    g["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.5;
+  }});
+  std::string shader = texture_shader("GltfMetallicGloss", "_MetallicGlossMap", "float4(t.r, t.a, t.g + t.b, 1)");
+  RenderedFrame frame = render("metal", small_scene(gltf_object(mesh, shader)));
+  ASSERT_EQ(frame.hdr.size(), size_t(64 * 64 * 4));
+  const double half = 3 * std::tan(20 * 3.14159265358979 / 180);
+  double smoothness = 1 - 0.5 * 64 / 255.0;
+  // The texture's left half has metallic 0, its right half 1 (times the factor 0.5).
+  for (auto [x_world, metallic] : {std::pair{-0.75, 0.0}, std::pair{0.0, 0.5}}) {
+    for (double y_world : {0.375, -0.375}) {
+      int x = int(32 + x_world / half * 32), y = int(32 - y_world / half * 32);
+      const float* p = &frame.hdr[size_t(y * 64 + x) * 4];
+      EXPECT_NEAR(p[0], metallic, 0.01) << x << ", " << y;
+      EXPECT_NEAR(p[1], smoothness, 0.01) << x << ", " << y;
+      EXPECT_NEAR(p[2], 0, 0.01) << x << ", " << y;
+    }
+  }
 }
 
 // ---------------------------------------------------------------- bad files
