@@ -138,7 +138,8 @@ bool too_deep(std::string_view text) {
 struct FileAccess {
   fs::path folder;
   uint64_t max_bytes = 0;
-  std::string refusal;  // why the last read was refused, if it was
+  std::string refusal;              // why the last read was refused, if it was
+  std::vector<std::string> files;  // what was read
 };
 
 // Whether `path` (tinygltf joins the folder and the URI) stays inside the folder.
@@ -185,6 +186,7 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     return false;
   }
   out->assign(bytes->begin(), bytes->end());
+  access.files.push_back(fs::path(path).lexically_normal().string());
   return true;
 }
 
@@ -219,8 +221,10 @@ std::string tinygltf_error(std::string text) {
   return text;
 }
 
+// The model, and in `files` the buffer files it read.
 std::optional<tinygltf::Model> parse_model(const std::string& path, const std::string& bytes, bool binary,
-                                           const GltfLimits& limits, std::string& why) {
+                                           const GltfLimits& limits, std::vector<std::string>& files,
+                                           std::string& why) {
   std::optional<std::string_view> json = binary ? glb_json(bytes, why) : std::string_view(bytes);
   if (!json) return std::nullopt;
   if (too_deep(*json)) {
@@ -242,6 +246,7 @@ std::optional<tinygltf::Model> parse_model(const std::string& path, const std::s
     why = !access.refusal.empty() ? access.refusal : tinygltf_error(err);
     return std::nullopt;
   }
+  files = std::move(access.files);
   return model;
 }
 
@@ -368,9 +373,9 @@ std::optional<GltfModel> read_gltf(const std::string& path, const GltfOptions& o
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   bool binary = extension == ".glb" || (bytes->size() >= 4 && le32(*bytes, 0) == kGlbMagic);
-  std::optional<tinygltf::Model> model = parse_model(path, *bytes, binary, options.limits, why);
-  if (!model) return std::nullopt;
   GltfModel out;
+  std::optional<tinygltf::Model> model = parse_model(path, *bytes, binary, options.limits, out.buffer_files, why);
+  if (!model) return std::nullopt;
   std::optional<std::vector<GltfPart>> parts = gltf_parts(*model, options.limits, why);
   if (!parts) return std::nullopt;
   if (!bounds_are_finite(*parts)) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "facet/commands.h"
@@ -386,6 +387,31 @@ TEST(HostileGltfControl, TheUnbrokenSampleRenders) {
   std::ostringstream out, err;
   EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), out, err), 0) << err.str();
   EXPECT_TRUE(std::filesystem::exists(png));
+}
+
+// A glTF mesh's .bin file is an input of the render: listed in the depfile
+// (with the textures its material names), and never overwritten by an output.
+TEST(GltfInputs, TheBinFileIsInTheDepfileAndAnOutputOverItIsRefused) {
+  std::string mesh = write_gltf_sample(test_dir(), "inputs", {.buffer = Buffer::bin_file});
+  std::string scene = write_scene("inputs", small_scene(gltf_object(mesh, unlit_texture_shader())));
+  std::string png = (test_dir() / "inputs.out.png").string(), depfile = png + ".d";
+  std::string bin = (test_dir() / "inputs.bin").string();
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", png.c_str(), "--depfile", depfile.c_str()};
+  std::ostringstream out, err;
+  ASSERT_EQ(tool::render_command(int(argv.size()), argv.data(), out, err), 0) << err.str();
+  std::ifstream in(depfile);
+  std::string rule((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(rule.find(bin), std::string::npos) << rule;
+  EXPECT_NE(rule.find((test_dir() / "inputs_albedo.png").string()), std::string::npos) << rule;
+
+  uintmax_t size = std::filesystem::file_size(bin);
+  std::vector<const char*> clash = {"render", scene.c_str(), "-o", bin.c_str()};
+  std::ostringstream out2, err2;
+  EXPECT_EQ(tool::render_command(int(clash.size()), clash.data(), out2, err2), 1);
+  EXPECT_NE(err2.str().find("is also an input of this render (a buffer of a glTF mesh of the scene)"),
+            std::string::npos)
+      << err2.str();
+  EXPECT_EQ(std::filesystem::file_size(bin), size);
 }
 
 }  // namespace

@@ -68,8 +68,9 @@ struct GltfPart {
 };
 
 struct GltfModel {
-  std::vector<GltfPart> parts;          // one per material used, in order of first use; never empty
-  std::vector<GltfMaterial> materials;  // all of the file's (when GltfOptions::materials)
+  std::vector<GltfPart> parts;            // one per material used, in order of first use; never empty
+  std::vector<GltfMaterial> materials;    // all of the file's (when GltfOptions::materials)
+  std::vector<std::string> buffer_files;  // the .bin files read beside it (for depfiles)
 };
 
 // True for a path ending in .gltf or .glb (any case).
