@@ -11,7 +11,8 @@
 
 namespace facet::runtime {
 
-// `base` (the object's material) plus the glTF material `index` of the file:
+// `base` (the object's material) plus the glTF material `index` of the file
+// (-1: glTF's default material, which GltfMaterial's defaults are):
 // _Color, _MainTex, _Metallic, _Glossiness, _MetallicGlossMap (+ _GlossMapScale
 // and the _METALLICGLOSSMAP keyword), _BumpMap (+ _BumpScale, _NORMALMAP),
 // _EmissionColor and _EmissionMap (+ _EMISSION). A property or keyword the

@@ -371,12 +371,11 @@ struct Reader {
     for (const GltfPart& part : model->parts) {
       SceneObject each = o;
       each.gltf_material = part.material;
-      if (part.material >= 0) {
-        Result<SceneMaterial, std::string> m =
-            with_gltf_material(o.material, model->materials[size_t(part.material)], part.material);
-        if (!m) throw Bad{join(path, "mesh"), o.mesh + ": " + m.error()};
-        each.material = std::move(*m);
-      }
+      // Primitives without a material get glTF's default one (GltfMaterial's defaults).
+      GltfMaterial gltf = part.material >= 0 ? model->materials[size_t(part.material)] : GltfMaterial{};
+      Result<SceneMaterial, std::string> m = with_gltf_material(o.material, gltf, part.material);
+      if (!m) throw Bad{join(path, "mesh"), o.mesh + ": " + m.error()};
+      each.material = std::move(*m);
       out.push_back(std::move(each));
     }
   }

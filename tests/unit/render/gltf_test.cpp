@@ -154,6 +154,22 @@ TEST(GltfScene, MaterialsMapOntoTheStandardShadersProperties) {
   EXPECT_EQ(m.keywords, (std::vector<std::string>{"_METALLICGLOSSMAP", "_NORMALMAP", "_EMISSION"}));
 }
 
+TEST(GltfScene, APrimitiveWithoutAMaterialGetsGltfsDefaultMaterial) {
+  std::string mesh = write_gltf_sample(test_dir(), "default_material", {.material = false});
+  std::string json = small_scene(gltf_object(mesh, unlit_texture_shader()));
+  auto scene = parse_scene(json, write_scene("default_material", json));
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_EQ(scene->objects.size(), 1u);
+  EXPECT_EQ(scene->objects[0].gltf_material, -1);
+  std::map<std::string, std::vector<float>> numbers;
+  for (const SceneProperty& p : scene->objects[0].material.properties) numbers[p.name] = p.numbers;
+  EXPECT_EQ(numbers["_Color"], (std::vector<float>{1, 1, 1, 1}));
+  EXPECT_EQ(numbers["_Metallic"], (std::vector<float>{1}));
+  EXPECT_EQ(numbers["_Glossiness"], (std::vector<float>{0}));
+  EXPECT_FALSE(numbers.count("_MainTex"));
+  EXPECT_TRUE(scene->objects[0].material.keywords.empty());
+}
+
 TEST(GltfScene, TheScenesOwnPropertiesWin) {
   std::string mesh = write_gltf_sample(test_dir(), "own");
   std::string objects = R"([{"mesh": ")" + mesh + R"(", "gltf_materials": true, "material": {"shader": ")" +
