@@ -138,7 +138,7 @@ bool too_deep(std::string_view text) {
 struct FileAccess {
   fs::path folder;
   uint64_t max_bytes = 0;
-  std::string refusal;              // why the last read was refused, if it was
+  std::string refusal;             // why the last read was refused, if it was
   std::vector<std::string> files;  // what was read
 };
 

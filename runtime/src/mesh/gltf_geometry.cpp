@@ -267,8 +267,22 @@ Vertex vertex(const Placement& at, size_t i, const View& position, const std::op
   return v;
 }
 
-// The primitive's corner list: its indices, checked against the vertex
-// count, or 0..count-1.
+// A strip's or fan's corners as a triangle list, in glTF's order (the
+// winding of each triangle as the spec defines it).
+std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& in, int mode) {
+  std::vector<uint32_t> out;
+  for (size_t i = 0; i + 2 < in.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      out.insert(out.end(), {in[i], in[i + 1 + i % 2], in[i + 2 - i % 2]});
+    } else {
+      out.insert(out.end(), {in[i + 1], in[i + 2], in[0]});
+    }
+  }
+  return out;
+}
+
+// The primitive's triangle corners: its indices, checked against the
+// vertex count, or 0..count-1; strips and fans become lists.
 std::vector<uint32_t> corners(Context& c, const tinygltf::Primitive& p, const std::string& where, size_t vertices) {
   std::vector<uint32_t> out;
   if (p.indices < 0) {
@@ -285,8 +299,18 @@ std::vector<uint32_t> corners(Context& c, const tinygltf::Primitive& p, const st
       out.push_back(uint32_t(index));
     }
   }
-  if (out.size() % 3 != 0) {
+  bool list = p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == -1;
+  if (list && out.size() % 3 != 0) {
     fail(where, fmt::format("{} corners are not whole triangles (a multiple of 3)", out.size()));
+  }
+  if (!list) {
+    if (out.size() < 3) fail(where, fmt::format("a triangle strip or fan of {} corners has no triangle", out.size()));
+    // Checked before the list is built: a strip of n corners is 3(n - 2) of them.
+    if (3 * out.size() > c.limits.max_triangle_corners) {
+      fail(where, fmt::format("the model has more than {} triangle corners (the limit of one glTF mesh)",
+                              c.limits.max_triangle_corners));
+    }
+    out = triangle_list(out, p.mode);
   }
   c.corners += out.size();
   if (c.corners > c.limits.max_triangle_corners) {
@@ -316,8 +340,11 @@ void flat_normals(MeshData& mesh) {
 }
 
 MeshData primitive_mesh(Context& c, const tinygltf::Primitive& p, const std::string& where, const Placement& at) {
-  if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) {
-    fail(where + ".mode", fmt::format("primitive mode {} is not supported (only triangles, mode 4)", p.mode));
+  if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+      p.mode != TINYGLTF_MODE_TRIANGLE_FAN && p.mode != -1) {
+    fail(where + ".mode",
+         fmt::format("primitive mode {} is not supported (only triangles: lists, strips and fans, modes 4 to 6)",
+                     p.mode));
   }
   auto it = p.attributes.find("POSITION");
   if (it == p.attributes.end()) fail(where + ".attributes", "the primitive has no POSITION");

@@ -26,9 +26,9 @@ struct Mapping {
   SceneProperty& add(const std::string& name) {
     SceneProperty p;
     p.name = name;
-    p.json_path = index >= 0 ? fmt::format("{}.properties.{} (from the glTF file's materials[{}])", out.json_path,
-                                           name, index)
-                             : fmt::format("{}.properties.{} (from glTF's default material)", out.json_path, name);
+    p.json_path = index >= 0
+                      ? fmt::format("{}.properties.{} (from the glTF file's materials[{}])", out.json_path, name, index)
+                      : fmt::format("{}.properties.{} (from glTF's default material)", out.json_path, name);
     p.if_declared = true;
     added.push_back(std::move(p));
     return added.back();

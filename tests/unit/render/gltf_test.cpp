@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -39,16 +40,19 @@ std::string texture_shader(const std::string& name, const std::string& property,
         #pragma vertex vert
         #pragma fragment frag
         #include "UnityCG.cginc"
-        sampler2D )" << property << "; float4 " << property << R"(_ST; float4 _Color;
+        sampler2D )" << property
+                      << "; float4 " << property << R"(_ST; float4 _Color;
         struct appdata { float4 vertex : POSITION; float2 uv : TEXCOORD0; };
         struct v2f { float4 pos : SV_POSITION; float2 uv : TEXCOORD0; };
         v2f vert(appdata v) {
             v2f o;
             o.pos = UnityObjectToClipPos(v.vertex);
-            o.uv = TRANSFORM_TEX(v.uv, )" << property << R"();
+            o.uv = TRANSFORM_TEX(v.uv, )"
+                      << property << R"();
             return o;
         }
-        fixed4 frag(v2f i) : SV_Target { float4 t = tex2D()" << property << ", i.uv); return " << show << R"(; }
+        fixed4 frag(v2f i) : SV_Target { float4 t = tex2D()"
+                      << property << ", i.uv); return " << show << R"(; }
         ENDCG
     } }
 })";
@@ -221,6 +225,22 @@ TEST_F(GltfRender, TheBaseColourTextureShowsUprightThroughAnUnlitShader) {
   }
 }
 
+// The same quad as a triangle strip (1, 2, 0, 3) and a fan (0, 1, 2, 3).
+TEST_F(GltfRender, StripsAndFansDrawTheSameQuad) {
+  for (auto [mode, order] :
+       {std::pair{5, std::vector<uint16_t>{1, 2, 0, 3}}, std::pair{6, std::vector<uint16_t>{0, 1, 2, 3}}}) {
+    std::string name = "mode_" + std::to_string(mode);
+    std::string mesh = write_gltf_sample(test_dir(), name, {.edit = [mode, order](nlohmann::json& g, std::string& b) {
+                                           g["meshes"][0]["primitives"][0]["mode"] = mode;
+                                           g["accessors"][6]["count"] = 4;
+                                           std::memcpy(b.data() + 288, order.data(), 8);
+                                         }});
+    RenderedFrame frame = render(name, small_scene(gltf_object(mesh, unlit_texture_shader())));
+    SCOPED_TRACE(name);
+    expect_quadrants(frame);
+  }
+}
+
 // The Standard shader in the dark (no lights, black ambient): what shows is
 // the emission, the glTF emissive texture times its factor.
 TEST_F(GltfRender, TheEmissionTextureShowsThroughTheStandardShader) {
@@ -236,9 +256,9 @@ TEST_F(GltfRender, TheEmissionTextureShowsThroughTheStandardShader) {
 // metallic (R) and smoothness (A); the shader shows them as red and green.
 TEST_F(GltfRender, TheMetallicRoughnessTextureBecomesUnitysMetallicGlossMap) {
   std::string mesh = write_gltf_sample(test_dir(), "metal", {.edit = [](nlohmann::json& g, std::string&) {
-    g["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.5;
-    g["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.5;
-  }});
+                                         g["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.5;
+                                         g["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.5;
+                                       }});
   std::string shader = texture_shader("GltfMetallicGloss", "_MetallicGlossMap", "float4(t.r, t.a, t.g + t.b, 1)");
   RenderedFrame frame = render("metal", small_scene(gltf_object(mesh, shader)));
   ASSERT_EQ(frame.hdr.size(), size_t(64 * 64 * 4));
@@ -344,7 +364,8 @@ const HostileGltfCase kHostileGltf[] = {
     {"no_positions", edit([](json& g, std::string&) { primitive(g)["attributes"].erase("POSITION"); }),
      "meshes[0].primitives[0].attributes: the primitive has no POSITION"},
     {"lines", edit([](json& g, std::string&) { primitive(g)["mode"] = 1; }),
-     "meshes[0].primitives[0].mode: primitive mode 1 is not supported (only triangles, mode 4)"},
+     "meshes[0].primitives[0].mode: primitive mode 1 is not supported (only triangles: lists, strips and fans, modes 4 "
+     "to 6)"},
     {"node_cycle", edit([](json& g, std::string&) { g["nodes"][1]["children"] = {0}; }),
      "nodes[1].children[0]: nodes[0] is reached twice (glTF nodes form a tree: one parent each, no cycles)"},
     {"missing_image", edit([](json&, std::string&) {}),
