@@ -23,7 +23,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FACET_FUZZ_BUILD_DIR:-$root/build-fuzz}
 jobs=${FACET_FUZZ_JOBS:-$(nproc)}
-all_targets=(shaderlab frontend hlsl package cache scene obj image)
+all_targets=(shaderlab frontend hlsl package cache scene obj gltf image)
 
 usage() {
   echo "usage: $0 TARGET|all SECONDS [libFuzzer args...]" >&2

@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libopenimageio-dev libpng-dev openimageio-tools nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libxxhash-dev libzstd-dev
-  libtbb-dev libtinyobjloader-dev clang-14 libclang-rt-14-dev libcurl4-openssl-dev libssl-dev glslc
+  libtbb-dev libtinyobjloader-dev libtinygltf-dev clang-14 libclang-rt-14-dev libcurl4-openssl-dev libssl-dev glslc
   chromium
   python3-jsonschema libxml2-utils  # facetc --check's report tests validate SARIF and JUnit with them
   nginx  # the remote-cache tests run it as a WebDAV server (its dav module is built in)

@@ -82,6 +82,7 @@ Result<Material, MaterialError> make_material(const ir::Shader& shader, const Sc
     auto fail = [&](const std::string& what) {
       return unexpected(MaterialError{fmt::format("{}: {}: {}", scene_path, value.json_path, what)});
     };
+    if (!p && value.if_declared) continue;  // a glTF material's value for a property this shader lacks
     if (!p) return fail(unknown_property(shader, value));
     if (p->is_texture()) {
       if (!value.texture) return fail("expected a texture (a built-in name, a file, or {\"texture\": ...})");

@@ -13,6 +13,7 @@
 #include <map>
 #include <glm/gtc/packing.hpp>
 
+#include "facet/runtime/gltf.h"
 #include "facet/runtime/vulkan_context.h"
 #include "render/background.h"
 #include "render/capture.h"
@@ -316,14 +317,23 @@ struct Loader {
   std::map<std::string, std::unique_ptr<GpuMesh>> meshes;
 
   Result<GpuMesh*, RenderError> mesh(const SceneObject& object) {
-    if (auto it = meshes.find(object.mesh); it != meshes.end()) return it->second.get();
+    std::string key = object.gltf_material ? fmt::format("{}#{}", object.mesh, *object.gltf_material) : object.mesh;
+    if (auto it = meshes.find(key); it != meshes.end()) return it->second.get();
     std::optional<MeshData> data;
     MeshError mesh_error;
-    data = object.builtin_mesh ? builtin_mesh(object.mesh) : load_obj(object.mesh, mesh_error);
+    if (object.builtin_mesh) {
+      data = builtin_mesh(object.mesh);
+    } else if (is_gltf_path(object.mesh)) {
+      if (std::optional<GltfModel> model = load_gltf(object.mesh, mesh_error)) {
+        data = merge_gltf_parts(*model, object.gltf_material);
+      }
+    } else {
+      data = load_obj(object.mesh, mesh_error);
+    }
     if (!data) return unexpected(error(fmt::format("{}: {}.mesh: {}", scene.path, object.json_path, mesh_error.message)));
     Result<GpuMesh, RenderError> gpu = upload_mesh(context, *data);
     if (!gpu) return unexpected(gpu.error());
-    auto& slot = meshes[object.mesh];
+    auto& slot = meshes[key];
     slot = std::make_unique<GpuMesh>(std::move(*gpu));
     return slot.get();
   }

@@ -143,6 +143,12 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
       if (ref.alpha_from_gray && (channels == 1 || channels == 3)) {
         rgba[3] = 0.2126f * rgba[0] + 0.7152f * rgba[1] + 0.0722f * rgba[2];
       }
+      if (const auto& factors = ref.gltf_metallic_roughness) {  // glTF: roughness in G, metallic in B
+        float metallic = (*factors)[0] * rgba[2], smoothness = 1 - (*factors)[1] * rgba[1];
+        rgba[0] = metallic;
+        rgba[1] = rgba[2] = 0;
+        rgba[3] = smoothness;
+      }
       for (int c = 0; c < 4; ++c) d[c] = decode && c < 3 ? float(srgb_to_linear(rgba[c])) : rgba[c];
     }
   }
@@ -172,7 +178,7 @@ Result<LoadedTexture, std::string> Resources::load_file(const SceneTexture& ref)
 }
 
 Result<const LoadedTexture*, std::string> Resources::texture(const SceneTexture& ref) {
-  auto key = std::make_tuple(ref.name, ref.srgb, ref.alpha_from_gray);
+  auto key = std::make_tuple(ref.name, ref.srgb, ref.alpha_from_gray, ref.gltf_metallic_roughness);
   if (auto it = textures_.find(key); it != textures_.end()) return it->second.get();
   Result<LoadedTexture, std::string> made =
       ref.builtin ? solid(builtin_rgba(ref.name), VK_IMAGE_VIEW_TYPE_2D, 1, false) : load_file(ref);

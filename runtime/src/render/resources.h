@@ -60,7 +60,9 @@ class Resources {
   Result<LoadedTexture, std::string> load_file(const SceneTexture& ref);
 
   const Context& context_;
-  std::map<std::tuple<std::string, bool, bool>, std::unique_ptr<LoadedTexture>> textures_;  // name, sRGB, alpha from grey
+  // name, sRGB, alpha from grey, glTF metallic-roughness factors
+  std::map<std::tuple<std::string, bool, bool, std::optional<std::array<float, 2>>>, std::unique_ptr<LoadedTexture>>
+      textures_;
   std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
   std::unique_ptr<LoadedTexture> environment_;
   VkSampler sampler_ = VK_NULL_HANDLE, point_sampler_ = VK_NULL_HANDLE;

@@ -17,8 +17,10 @@
 #include <set>
 #include <sstream>
 
+#include "facet/runtime/gltf.h"
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/scene.h"
+#include "scene/gltf_material.h"
 
 namespace facet::runtime {
 namespace {
@@ -327,8 +329,10 @@ struct Reader {
     return m;
   }
 
-  SceneObject object(const json& j, const std::string& path) const {
-    check_keys(j, path, {"name", "mesh", "position", "rotation", "look_at", "scale", "material"});
+  // One object of the file, or with "gltf_materials" one per glTF material
+  // its mesh uses, each with that material mapped onto its own.
+  void object(const json& j, const std::string& path, std::vector<SceneObject>& out) const {
+    check_keys(j, path, {"name", "mesh", "position", "rotation", "look_at", "scale", "material", "gltf_materials"});
     SceneObject o;
     o.json_path = path;
     if (j.contains("name")) o.name = text(member(j, "name"), join(path, "name"));
@@ -348,7 +352,32 @@ struct Reader {
     o.transform = transform(j, path);
     if (!j.contains("material")) throw Bad{path, "missing key 'material'"};
     o.material = material(member(j, "material"), join(path, "material"));
-    return o;
+    bool gltf_materials = false;
+    if (j.contains("gltf_materials")) {
+      const json& g = member(j, "gltf_materials");
+      if (!g.is_boolean()) throw Bad{join(path, "gltf_materials"), "expected true or false"};
+      gltf_materials = g.get<bool>();
+      if (gltf_materials && (o.builtin_mesh || !is_gltf_path(o.mesh))) {
+        throw Bad{join(path, "gltf_materials"), "needs a glTF mesh (a .gltf or .glb file)"};
+      }
+    }
+    if (!gltf_materials) {
+      out.push_back(std::move(o));
+      return;
+    }
+    MeshError error;
+    std::optional<GltfModel> model = load_gltf(o.mesh, error, {.materials = true});
+    if (!model) throw Bad{join(path, "mesh"), error.message};
+    for (const GltfPart& part : model->parts) {
+      SceneObject each = o;
+      each.gltf_material = part.material;
+      // Primitives without a material get glTF's default one (GltfMaterial's defaults).
+      GltfMaterial gltf = part.material >= 0 ? model->materials[size_t(part.material)] : GltfMaterial{};
+      Result<SceneMaterial, std::string> m = with_gltf_material(o.material, gltf, part.material);
+      if (!m) throw Bad{join(path, "mesh"), o.mesh + ": " + m.error()};
+      each.material = std::move(*m);
+      out.push_back(std::move(each));
+    }
   }
 
   SceneFog fog(const json& j, const std::string& path) const {
@@ -422,7 +451,7 @@ struct Reader {
     if (!j.contains("objects")) throw Bad{"objects", "missing (a list of objects)"};
     const json& objects = member(j, "objects");
     if (!objects.is_array()) throw Bad{"objects", "expected a list of objects"};
-    for (size_t i = 0; i < objects.size(); ++i) s.objects.push_back(object(objects[i], index("objects", i)));
+    for (size_t i = 0; i < objects.size(); ++i) object(objects[i], index("objects", i), s.objects);
     if (j.contains("ambient")) ambient(member(j, "ambient"), s);
     if (s.camera.clear_sky && !s.sky) {
       throw Bad{"camera.clear", "\"sky\" needs a procedural sky: give ambient as {\"sky\": {...}}"};

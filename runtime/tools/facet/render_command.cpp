@@ -10,6 +10,7 @@
 #include <set>
 
 #include "facet/commands.h"
+#include "facet/runtime/gltf.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/vulkan_context.h"
 #include "facet/support/atomic_file.h"
@@ -40,11 +41,25 @@ void add_material(std::vector<SceneInput>& inputs, const runtime::SceneMaterial&
   for (const runtime::SceneProperty& p : material.properties) add_texture(inputs, p.texture);
 }
 
-// The scene file, and every mesh, shader and texture file it names.
+// The .bin files of a glTF mesh (read once more here: the scene names only
+// the .gltf); none when it does not load, which the render then reports.
+void add_gltf_buffers(std::vector<SceneInput>& inputs, const std::string& mesh) {
+  runtime::MeshError error;
+  if (std::optional<runtime::GltfModel> model = runtime::load_gltf(mesh, error)) {
+    for (const std::string& file : model->buffer_files) inputs.push_back({file, "a buffer of a glTF mesh of the scene"});
+  }
+}
+
+// The scene file, and every mesh (with a glTF mesh's buffers), shader and
+// texture file it names.
 std::vector<SceneInput> scene_inputs(const std::string& scene_path, const runtime::Scene& scene) {
   std::vector<SceneInput> inputs{{scene_path, "the scene"}};
+  std::set<std::string> gltf_meshes;
   for (const runtime::SceneObject& o : scene.objects) {
     if (!o.builtin_mesh) inputs.push_back({o.mesh, "a mesh of the scene"});
+    if (!o.builtin_mesh && runtime::is_gltf_path(o.mesh) && gltf_meshes.insert(o.mesh).second) {
+      add_gltf_buffers(inputs, o.mesh);
+    }
     add_material(inputs, o.material);
   }
   for (const runtime::ScenePostEffect& p : scene.post) add_material(inputs, p.material);

@@ -55,6 +55,10 @@ struct SceneTexture {
   bool builtin = false;
   bool srgb = true;       // colour data; false for normal maps, masks, data
   bool alpha_from_gray = false;  // a file without alpha gets alpha = its grey level (cookies)
+  // A glTF metallicRoughness texture and the material's (metallic,
+  // roughness) factors: the texels become Unity's _MetallicGlossMap,
+  // (metallic x B, 0, 0, 1 - roughness x G) (docs/scene-format.md).
+  std::optional<std::array<float, 2>> gltf_metallic_roughness;
   std::array<float, 2> scale{1, 1}, offset{0, 0};
 };
 
@@ -107,6 +111,7 @@ struct SceneProperty {
   std::string json_path;            // "objects[0].material.properties._Color"
   std::vector<float> numbers;       // a number or a list of numbers
   std::optional<SceneTexture> texture;
+  bool if_declared = false;         // from a glTF material: skipped when the shader has no such property
 };
 
 struct SceneMaterial {
@@ -120,8 +125,11 @@ struct SceneMaterial {
 struct SceneObject {
   std::string name;
   std::string json_path;            // "objects[0]"
-  std::string mesh;                 // built-in name or resolved .obj path
+  std::string mesh;                 // built-in name or resolved .obj, .gltf or .glb path
   bool builtin_mesh = true;
+  // A glTF mesh with "gltf_materials": only the primitives of this glTF
+  // material (-1: those without one); all primitives when absent.
+  std::optional<int> gltf_material;
   Transform transform;
   SceneMaterial material;
 };
