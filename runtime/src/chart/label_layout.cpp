@@ -100,7 +100,7 @@ class Placer {
         double reach = (r.marker_radius + options_.gap + extra) / std::max(std::abs(d.x), std::abs(d.y));
         Box b = attach(r.x + d.x * reach, r.y + d.y * reach, shape.width(), shape.height(), d);
         PlacedLabel l{.text = text, .box = b, .baseline_x = b.x0, .baseline_y = b.y0 - shape.y0};
-        if (extra > 0) add_leader(l, r);
+        if (extra > 0 && !add_leader(l, r)) continue;
         if (fits(l, r)) {
           placed_.push_back(l);
           return l;
@@ -111,12 +111,16 @@ class Placer {
   }
 
  private:
-  static void add_leader(PlacedLabel& l, const LabelRequest& r) {
+  // From the marker's edge to the nearest point of the box; false when the
+  // box comes within the marker (no line to draw).
+  static bool add_leader(PlacedLabel& l, const LabelRequest& r) {
     double qx = std::clamp(r.x, l.box.x0, l.box.x1), qy = std::clamp(r.y, l.box.y0, l.box.y1);
     double len = std::hypot(qx - r.x, qy - r.y);
+    if (!(len > r.marker_radius)) return false;
     l.has_leader = true;
     l.leader_x0 = r.x + (qx - r.x) / len * r.marker_radius, l.leader_y0 = r.y + (qy - r.y) / len * r.marker_radius;
     l.leader_x1 = qx, l.leader_y1 = qy;
+    return true;
   }
 
   bool fits(const PlacedLabel& l, const LabelRequest& r) const {

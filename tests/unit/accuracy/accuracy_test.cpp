@@ -99,7 +99,7 @@ TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructio
   bool chartable = std::any_of(study->rows.begin(), study->rows.end(), [](const StudyRow& r) {
     return r.error > 0 && std::isfinite(r.error) && r.ns_per_eval && *r.ns_per_eval > 0;
   });
-  EXPECT_EQ(html.find("<svg") != std::string::npos, chartable);
+  EXPECT_EQ(html.find("class=\"pareto\"") != std::string::npos, chartable);
   EXPECT_EQ(html.find("No row has both an error and a GPU time") != std::string::npos, !chartable);
   // With times, every row with an error is a point of the chart.
   Study timed = *study;
@@ -109,7 +109,7 @@ TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructio
     with_error += timed.rows[i].error > 0 && std::isfinite(timed.rows[i].error);
   }
   std::string chart = study_html(timed);
-  EXPECT_NE(chart.find("<svg"), std::string::npos);
+  EXPECT_NE(chart.find("class=\"pareto\""), std::string::npos);
   size_t points = 0;
   for (size_t at = chart.find("class=\"point\""); at != std::string::npos; at = chart.find("class=\"point\"", at + 1)) ++points;
   EXPECT_EQ(points, with_error);
@@ -238,6 +238,11 @@ TEST(AccuracyChartTest, DrawsOnePanelPerErrorKindColouredByFamily) {
   EXPECT_NE(cpu.find("class=\"caveat\""), std::string::npos);
   EXPECT_NE(cpu.find("times measured on lavapipe, a CPU implementation of Vulkan: relative only"), std::string::npos);
   EXPECT_EQ(study_chart_svg(study), cpu);  // deterministic
+  // Without times there is no chart, and the SVG says why.
+  for (StudyRow& r : study.rows) r.ns_per_eval.reset();
+  std::string none = study_chart_svg(study);
+  EXPECT_EQ(none.find("class=\"pareto\""), std::string::npos);
+  EXPECT_NE(none.find("No row has both an error and a GPU time"), std::string::npos);
 }
 
 }  // namespace
