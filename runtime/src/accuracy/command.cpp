@@ -2,6 +2,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <fstream>
+#include <sstream>
 
 #include "facet/runtime/accuracy.h"
 #include "facet/support/atomic_file.h"
@@ -17,14 +19,32 @@ bool write_report(const std::string& path, const std::string& text, std::ostream
   return true;
 }
 
+// The study read back from a file that study_json wrote.
+Result<Study> read_study(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return failure(fmt::format("cannot read '{}'", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  Result<Study> study = study_from_json(text.str());
+  if (!study) return failure(fmt::format("'{}': {}", path, study.error().reason));
+  return study;
+}
+
+std::string report_of(const Study& study, const std::string& output) {
+  if (output.ends_with(".json")) return study_json(study);
+  if (output.ends_with(".svg")) return study_chart_svg(study);
+  return study_html(study);
+}
+
 }  // namespace
 
 int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"The accuracy-versus-cost study of facet's lighting library", "facet bench accuracy"};
   StudyOptions options;
-  std::string output;
+  std::string output, from;
   bool no_gpu = false;
-  app.add_option("--out,-o", output, "report.html or report.json")->required();
+  app.add_option("--out,-o", output, "report.html, report.json or chart.svg (the Pareto chart alone)")->required();
+  app.add_option("--from", from, "redraw a study that --out report.json wrote, instead of measuring");
   app.add_option("--device", options.device, "Vulkan device: index or name part (default: lavapipe)");
   app.add_option("--width", options.width, "invocation grid width")->check(CLI::Range(1u, 8192u));
   app.add_option("--height", options.height, "invocation grid height")->check(CLI::Range(1u, 8192u));
@@ -44,18 +64,26 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
     return 2;
   }
   options.gpu = !no_gpu;
-  bool json = output.ends_with(".json");
-  if (!json && !output.ends_with(".html")) {
-    err << fmt::format("facet bench accuracy: --out '{}' must end in .html or .json\n", output);
+  if (!output.ends_with(".json") && !output.ends_with(".html") && !output.ends_with(".svg")) {
+    err << fmt::format("facet bench accuracy: --out '{}' must end in .html, .json or .svg\n", output);
     return 2;
   }
-  Diagnostics diags;
-  auto study = run_study(options, diags);
-  if (!study) {
-    for (const Diagnostic& d : diags.all()) err << "facet bench accuracy: " << d.message << "\n";
-    return 1;
+  Result<Study> study = failure();
+  if (!from.empty()) {
+    study = read_study(from);
+    if (!study) {
+      err << "facet bench accuracy: " << study.error().reason << "\n";
+      return 1;
+    }
+  } else {
+    Diagnostics diags;
+    study = run_study(options, diags);
+    if (!study) {
+      for (const Diagnostic& d : diags.all()) err << "facet bench accuracy: " << d.message << "\n";
+      return 1;
+    }
   }
-  if (!write_report(output, json ? study_json(*study) : study_html(*study), err)) return 1;
+  if (!write_report(output, report_of(*study, output), err)) return 1;
   out << fmt::format("facet bench accuracy: {} rows on {} -> {}\n", study->rows.size(),
                      study->device.empty() ? "no GPU" : study->device, output);
   return 0;

@@ -1,9 +1,11 @@
-// The study as JSON, and as one HTML page with the table and a log-log
-// Pareto chart (error against ns per evaluation) in inline SVG.
+// The study as JSON (written and read back), and as one HTML page with the
+// Pareto chart (pareto_chart.cpp) and the table; what the chart needs to
+// know about a study: its error kinds and whether it was timed on a CPU.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "facet/markup.h"
@@ -12,69 +14,68 @@
 namespace facet::runtime::accuracy {
 namespace {
 
-bool on_chart(const StudyRow& r) { return r.error > 0 && std::isfinite(r.error) && r.ns_per_eval && *r.ns_per_eval > 0; }
-
-// Pareto-optimal rows within a group: no other row of the group is both
-// cheaper and more accurate.
-bool pareto(const StudyRow& r, const std::vector<StudyRow>& rows) {
-  for (const StudyRow& o : rows) {
-    if (&o == &r || o.group != r.group || !on_chart(o)) continue;
-    if (*o.ns_per_eval <= *r.ns_per_eval && o.error <= r.error && (*o.ns_per_eval < *r.ns_per_eval || o.error < r.error)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-std::string chart(const Study& study) {
-  std::vector<const StudyRow*> points;
-  for (const StudyRow& r : study.rows) {
-    if (on_chart(r)) points.push_back(&r);
-  }
-  if (points.empty()) return "<p>No row has both an error and a GPU time (run with a GPU to draw the chart).</p>\n";
-  double x0 = 1e30, x1 = 0, y0 = 1e30, y1 = 0;
-  for (const StudyRow* r : points) {
-    x0 = std::min(x0, *r->ns_per_eval), x1 = std::max(x1, *r->ns_per_eval);
-    y0 = std::min(y0, r->error), y1 = std::max(y1, r->error);
-  }
-  double lx0 = std::floor(std::log10(x0)), lx1 = std::ceil(std::log10(x1) + 1e-9);
-  double ly0 = std::floor(std::log10(y0)), ly1 = std::ceil(std::log10(y1) + 1e-9);
-  if (lx1 == lx0) lx1 += 1;
-  if (ly1 == ly0) ly1 += 1;
-  const double W = 760, H = 440, L = 70, R = 20, T = 20, B = 50;
-  auto px = [&](double x) { return L + (std::log10(x) - lx0) / (lx1 - lx0) * (W - L - R); };
-  auto py = [&](double y) { return H - B - (std::log10(y) - ly0) / (ly1 - ly0) * (H - T - B); };
-  std::string svg = fmt::format(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="{}" height="{}" class="pareto">)svg", W, H);
-  svg += fmt::format(R"svg(<rect x="{}" y="{}" width="{}" height="{}" fill="#fafafa" stroke="#999"/>)svg", L, T, W - L - R,
-                     H - T - B);
-  for (double e = lx0; e <= lx1; ++e) {
-    svg += fmt::format(R"svg(<line x1="{0}" x2="{0}" y1="{1}" y2="{2}" stroke="#ddd"/><text x="{0}" y="{3}" font-size="11" text-anchor="middle">1e{4}</text>)svg",
-                       px(std::pow(10, e)), T, H - B, H - B + 16, int(e));
-  }
-  for (double e = ly0; e <= ly1; ++e) {
-    svg += fmt::format(R"svg(<line x1="{0}" x2="{1}" y1="{2}" y2="{2}" stroke="#ddd"/><text x="{3}" y="{4}" font-size="11" text-anchor="end">1e{5}</text>)svg",
-                       L, W - R, py(std::pow(10, e)), L - 6, py(std::pow(10, e)) + 4, int(e));
-  }
-  svg += fmt::format(R"svg(<text x="{}" y="{}" font-size="12" text-anchor="middle">GPU ns per evaluation (minus the null pass)</text>)svg",
-                     (L + W - R) / 2, H - 12);
-  svg += fmt::format(R"svg(<text x="16" y="{}" font-size="12" transform="rotate(-90 16 {})" text-anchor="middle">error (row metric)</text>)svg",
-                     (T + H - B) / 2, (T + H - B) / 2);
-  for (const StudyRow* r : points) {
-    bool best = pareto(*r, study.rows);
-    svg += fmt::format(R"svg(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="{}" class="point"><title>{}: error {:.3g}, {:.3g} ns</title></circle>)svg",
-                       px(*r->ns_per_eval), py(r->error), best ? "#d62728" : "#1f77b4", xml_escape(r->id), r->error,
-                       *r->ns_per_eval);
-    svg += fmt::format(R"svg(<text x="{:.1f}" y="{:.1f}" font-size="9">{}</text>)svg", px(*r->ns_per_eval) + 6,
-                       py(r->error) - 4, xml_escape(r->id));
-  }
-  return svg + "</svg>\n<p>Red: Pareto-optimal within its group (nothing in the group is both cheaper and more accurate).</p>\n";
-}
-
 std::string cell(const std::optional<double>& v, const char* format) {
   return v ? fmt::format(fmt::runtime(format), *v) : std::string("-");
 }
 
+double number(const nlohmann::json& j, const char* key, double fallback = 0) {
+  auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : fallback;
+}
+std::string string_of(const nlohmann::json& j, const char* key) {
+  auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+Result<StudyRow> row_from_json(const nlohmann::json& j) {
+  if (!j.is_object() || !j.contains("id") || !j["id"].is_string()) return failure("a row without an 'id'");
+  StudyRow r{.id = string_of(j, "id"), .group = string_of(j, "group"), .name = string_of(j, "name"),
+             .reference = string_of(j, "reference"), .metric = string_of(j, "metric"), .error = number(j, "error"),
+             .detail = string_of(j, "detail"), .anchor = string_of(j, "anchor"),
+             .spirv_instructions = uint32_t(number(j, "spirv_instructions"))};
+  if (j.contains("error_is_infinite") && j["error_is_infinite"].is_boolean() && j["error_is_infinite"].get<bool>()) r.error = std::numeric_limits<double>::infinity();
+  if (j.contains("ns_per_eval") && j["ns_per_eval"].is_number()) r.ns_per_eval = j["ns_per_eval"].get<double>();
+  return r;
+}
+
 }  // namespace
+
+bool timed_on_cpu(const Study& study) {
+  if (!study.device_type.empty()) return study.device_type == "cpu";
+  for (const char* cpu : {"llvmpipe", "lavapipe", "SwiftShader"}) {
+    if (study.device.find(cpu) != std::string::npos) return true;
+  }
+  return false;
+}
+
+ErrorKind error_kind(const StudyRow& row) {
+  const std::string& m = row.metric;
+  if (m.empty() || m == "-") return ErrorKind::none;
+  if (m.starts_with("fp16")) return ErrorKind::fp16;
+  if (m.find("relL1") != std::string::npos) return ErrorKind::lobe;
+  for (const char* energy : {"albedo", "energy", "|E - 1|"}) {
+    if (m.find(energy) != std::string::npos) return ErrorKind::energy;
+  }
+  return ErrorKind::pointwise;
+}
+
+Result<Study> study_from_json(const std::string& text) {
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return failure("not a JSON object");
+  if (!j.contains("rows") || !j["rows"].is_array()) return failure("no 'rows' array: not a study written by facet bench accuracy");
+  Study study{.device = string_of(j, "device"), .device_type = string_of(j, "device_type")};
+  if (j.contains("grid") && j["grid"].is_array() && j["grid"].size() == 2 && j["grid"][0].is_number() && j["grid"][1].is_number()) {
+    study.options.width = j["grid"][0].get<uint32_t>(), study.options.height = j["grid"][1].get<uint32_t>();
+  }
+  study.options.evaluations = uint32_t(number(j, "evaluations_per_invocation", study.options.evaluations));
+  study.options.frames = uint32_t(number(j, "frames", study.options.frames));
+  for (const nlohmann::json& r : j["rows"]) {
+    Result<StudyRow> row = row_from_json(r);
+    if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
+    study.rows.push_back(std::move(*row));
+  }
+  return study;
+}
 
 std::string study_json(const Study& study) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -90,6 +91,7 @@ std::string study_json(const Study& study) {
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
+                             {"device_type", study.device_type},
                              {"grid", {study.options.width, study.options.height}},
                              {"evaluations_per_invocation", study.options.evaluations},
                              {"frames", study.options.frames},
@@ -107,7 +109,7 @@ std::string study_html(const Study& study) {
                       "minus a null pass.</p>\n",
                       xml_escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
-  html += chart(study);
+  html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
           "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
   for (const StudyRow& r : study.rows) {

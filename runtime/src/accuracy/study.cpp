@@ -94,6 +94,7 @@ Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>
     return failure("no device");
   }
   study.device = (*context)->device_info().name;
+  study.device_type = std::string(device_type_name((*context)->device_info().type));
   std::vector<EvalFunction> functions{timed_function("", kNullModel, options.evaluations)};
   for (const RowSpec& s : specs) functions.push_back(timed_function(s.includes, s.hlsl, options.evaluations));
   auto evaluator = compile_evaluator(**context, functions, {}, diags);

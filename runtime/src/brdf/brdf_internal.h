@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "facet/runtime/brdf.h"
+#include "facet/runtime/chart.h"
 
 namespace facet::brdf {
 
@@ -26,7 +27,18 @@ struct Stroke {
   std::vector<glm::dvec2> points;  // pixels, y down
   std::string colour = "#000000";  // #rrggbb
   double width = 1.5;
-  bool dashed = false;
+  std::string dash;       // SVG stroke-dasharray in pixels ("" solid); the PNG dashes the same lengths
+  std::string css_class;  // the SVG class ("curve" for a model's curve), "" for none
+  int series = -1;        // the model's index for a curve, -1 for none (SVG data-series)
+};
+// A marker drawn over every stroke (markers of overlaid curves, legend samples).
+struct Mark {
+  chart::MarkerShape shape = chart::MarkerShape::circle;
+  glm::dvec2 at{0.0};
+  double radius = 3.5;
+  std::string colour = "#000000";
+  std::string css_class;  // "marker" on a curve (with its series), "legend-marker" in the legend
+  int series = -1;        // the curve's index, -1 for none (SVG data-series)
 };
 struct Label {
   glm::dvec2 at{0.0};
@@ -44,15 +56,13 @@ struct Figure {
   std::string background = "#ffffff";
   std::vector<Embedded> images;
   std::vector<Stroke> strokes;
+  std::vector<Mark> marks;  // drawn after the strokes, before the labels
   std::vector<Label> labels;
 };
 Result<std::string> to_svg(const Figure& f);
 // Lines through OIIO's render_line; text through render_text where a font
 // is found (a PNG without a font still has every curve).
 Result<std::string> to_png(const Figure& f);
-
-// The legend colour of series i.
-std::string series_colour(std::size_t i);
 
 // Writes to a sibling temporary file, then renames: a failed write leaves
 // nothing at `path`.

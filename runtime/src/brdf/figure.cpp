@@ -37,14 +37,49 @@ std::vector<float> rgb_of(const std::string& hex) {
   return {r / 255.0f, g / 255.0f, b / 255.0f};
 }
 
+void draw_line(OIIO::ImageBuf& buf, glm::dvec2 from, glm::dvec2 to, const std::vector<float>& c, int thickness) {
+  glm::ivec2 a(glm::round(from)), b(glm::round(to));
+  for (int t = 0; t < thickness; ++t) OIIO::ImageBufAlgo::render_line(buf, a.x, a.y + t, b.x, b.y + t, c, true);
+}
+
+// The polyline cut into the dash pattern's "on" pieces, by arc length (as SVG does).
+std::vector<std::pair<glm::dvec2, glm::dvec2>> dash_pieces(const Stroke& s) {
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> out;
+  std::vector<double> pattern = chart::dash_lengths(s.dash);
+  double period = 0;
+  for (double d : pattern) period += d;
+  for (size_t i = 1; i < s.points.size(); ++i) out.emplace_back(s.points[i - 1], s.points[i]);
+  if (period <= 0) return out;
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> dashed;
+  size_t k = 0;
+  double left = pattern[0];  // of the current dash or gap
+  for (auto [a, b] : out) {
+    double len = glm::length(b - a), at = 0;
+    while (at < len) {
+      double step = std::min(left, len - at);
+      if (k % 2 == 0 && step > 0) dashed.emplace_back(a + (b - a) * (at / len), a + (b - a) * ((at + step) / len));
+      at += step, left -= step;
+      if (left <= 0) k = (k + 1) % pattern.size(), left = pattern[k];
+    }
+  }
+  return dashed;
+}
+
 void draw_stroke(OIIO::ImageBuf& buf, const Stroke& s) {
   std::vector<float> c = rgb_of(s.colour);
-  int thickness = s.width >= 2.0 ? 2 : 1;
-  for (size_t i = 1; i < s.points.size(); ++i) {
-    if (s.dashed && (i / 4) % 2 == 1) continue;  // dashed strokes come as many short segments
-    glm::ivec2 a(glm::round(s.points[i - 1])), b(glm::round(s.points[i]));
-    for (int t = 0; t < thickness; ++t) OIIO::ImageBufAlgo::render_line(buf, a.x, a.y + t, b.x, b.y + t, c, i > 1);
+  for (auto [a, b] : dash_pieces(s)) draw_line(buf, a, b, c, s.width >= 2.0 ? 2 : 1);
+}
+
+void draw_mark(OIIO::ImageBuf& buf, const Mark& m) {
+  std::vector<float> c = rgb_of(m.colour);
+  std::vector<chart::Point2> p = chart::marker_outline(m.shape, m.at.x, m.at.y, m.radius);
+  auto at = [&](size_t i) { return glm::dvec2(p[i].x, p[i].y); };
+  if (m.shape == chart::MarkerShape::plus || m.shape == chart::MarkerShape::cross) {
+    draw_line(buf, at(0), at(1), c, 2);
+    draw_line(buf, at(2), at(3), c, 2);
+    return;
   }
+  for (size_t i = 0; i < p.size(); ++i) draw_line(buf, at(i), at((i + 1) % p.size()), c, 2);
 }
 
 // OIIO's text rendering draws these symbols badly at small sizes.
@@ -108,11 +143,6 @@ Result<std::string> encode_png(const Image8& im) {
   return std::string(bytes.begin(), bytes.end());
 }
 
-std::string series_colour(std::size_t i) {
-  static const char* k[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
-  return k[i % 8];
-}
-
 Result<std::string> to_svg(const Figure& f) {
   std::string s = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
@@ -127,11 +157,19 @@ Result<std::string> to_svg(const Figure& f) {
   for (const Stroke& st : f.strokes) {
     std::string pts;
     for (const glm::dvec2& p : st.points) pts += fmt::format("{:.2f},{:.2f} ", p.x, p.y);
-    s += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n", st.colour,
-                     st.width, st.dashed ? " stroke-dasharray=\"6 4\"" : "", pts);
+    std::string attributes = st.css_class.empty() ? "" : " class=\"" + st.css_class + "\"";
+    if (st.series >= 0) attributes += fmt::format(" data-series=\"{}\"", st.series);
+    s += fmt::format("<polyline{} fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>\n", attributes,
+                     st.colour, st.width,
+                     st.dash.empty() ? "" : " stroke-dasharray=\"" + st.dash + "\"", pts);
+  }
+  for (const Mark& m : f.marks) {
+    std::string attributes = fmt::format("class=\"{}\" data-shape=\"{}\"", m.css_class, chart::marker_name(m.shape));
+    if (m.series >= 0) attributes += fmt::format(" data-series=\"{}\"", m.series);
+    s += chart::marker_svg(m.shape, m.at.x, m.at.y, m.radius, m.colour, true, attributes) + "\n";
   }
   for (const Label& l : f.labels) {
-    s += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>\n",
+    s += fmt::format("<text class=\"label\" x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>\n",
                      l.at.x, l.at.y, l.size, l.colour, l.anchor, xml_escape(l.text));
   }
   return s + "</svg>\n";
@@ -151,6 +189,7 @@ Result<std::string> to_png(const Figure& f) {
     }
   }
   for (const Stroke& s : f.strokes) draw_stroke(buf, s);
+  for (const Mark& m : f.marks) draw_mark(buf, m);
   for (const Label& l : f.labels) draw_label(buf, l);
   Image8 im{f.width, f.height, std::vector<uint8_t>(size_t(f.width) * f.height * 3)};
   buf.get_pixels(OIIO::ROI(0, f.width, 0, f.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, im.rgb.data());

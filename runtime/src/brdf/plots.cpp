@@ -14,12 +14,24 @@ constexpr double kDeg = kPi / 180.0;
 const std::string kGrid = "#cccccc", kAxis = "#222222", kGuide = "#888888";
 constexpr size_t kLegendChars = 96;
 
-// Many points, so that the raster dashes it and the SVG can bend nothing.
-Stroke segment(dvec2 a, dvec2 b, const std::string& colour, double width, bool dashed = false) {
-  Stroke s{{}, colour, width, dashed};
-  const int n = dashed ? 48 : 1;
-  for (int i = 0; i <= n; ++i) s.points.push_back(a + (b - a) * (double(i) / n));
-  return s;
+constexpr const char* kGuideDash = "6 4";
+
+Stroke segment(dvec2 a, dvec2 b, const std::string& colour, double width, const std::string& dash = "") {
+  return {{a, b}, colour, width, dash};
+}
+
+// Model i's curve in its series style, with markers along it (drawn over
+// every curve). The markers of n curves start at different arc lengths, so
+// that curves that coincide still show each one's markers.
+void add_curve(Figure& f, std::vector<dvec2> points, size_t i, size_t n) {
+  const chart::SeriesStyle style = chart::series_style(i);
+  const double spacing = std::max(60.0, 15.0 * double(n));
+  std::vector<chart::Point2> line;
+  for (const dvec2& p : points) line.push_back({p.x, p.y});
+  for (const chart::Point2& m : chart::points_along(line, spacing, spacing * (double(i) + 0.5) / double(n))) {
+    f.marks.push_back({style.marker, dvec2(m.x, m.y), 3.5, style.colour, "marker", int(i)});
+  }
+  f.strokes.push_back({std::move(points), style.colour, 2.0, style.dash, "curve", int(i)});
 }
 
 // The smallest 1, 2, 2.5 or 5 times a power of ten that is >= x.
@@ -53,7 +65,9 @@ namespace {
 double add_legend(Figure& f, const std::vector<std::string>& labels, double y0) {
   double y = y0;
   for (size_t i = 0; i < labels.size(); ++i) {
-    f.strokes.push_back(segment({20, y - 4}, {50, y - 4}, series_colour(i), 2.5));
+    const chart::SeriesStyle style = chart::series_style(i);
+    f.strokes.push_back(segment({14, y - 4}, {52, y - 4}, style.colour, 2.0, style.dash));
+    f.marks.push_back({style.marker, dvec2(33, y - 4), 3.5, style.colour, "legend-marker"});
     for (const std::string& line : wrap_label(labels[i], kLegendChars)) {
       f.labels.push_back({{58, y}, line, "start", 12});
       y += 18;
@@ -90,12 +104,12 @@ Figure polar_figure(const std::vector<std::string>& labels, const std::vector<st
   }
   f.strokes.push_back(segment({cx - R, cy}, {cx + R, cy}, kAxis, 1.5));
   dvec2 light(-std::sin(incidence_deg * kDeg), std::cos(incidence_deg * kDeg));
-  f.strokes.push_back(segment({cx, cy}, {cx + light.x * R, cy - light.y * R}, kGuide, 1.5, true));
+  f.strokes.push_back(segment({cx, cy}, {cx + light.x * R, cy - light.y * R}, kGuide, 1.5, kGuideDash));
   f.labels.push_back({{cx + light.x * R * 0.9 - 8, cy - light.y * R * 0.9}, "light", "end", 11, kGuide});
   for (size_t i = 0; i < curves.size(); ++i) {
-    Stroke s{{}, series_colour(i), 2.0};
-    for (const PolarPoint& p : curves[i]) s.points.push_back(at(p.x, p.y));
-    f.strokes.push_back(s);
+    std::vector<dvec2> points;
+    for (const PolarPoint& p : curves[i]) points.push_back(at(p.x, p.y));
+    add_curve(f, std::move(points), i, curves.size());
   }
   f.labels.push_back({{20, 24},
                       fmt::format("polar plot: f(l, v) cos θv in the plane of incidence, light at {}°, {}",
@@ -126,13 +140,13 @@ Figure albedo_figure(const std::vector<std::string>& labels, const std::vector<s
     f.strokes.push_back(segment(at(t, 0), at(t, ymax), kGrid, 1.0));
     f.labels.push_back({at(t, 0) + dvec2(0, 16), fmt::format("{}°", t), "middle", 10});
   }
-  f.strokes.push_back(segment(at(0, 1), at(90, 1), kGuide, 1.5, true));
+  f.strokes.push_back(segment(at(0, 1), at(90, 1), kGuide, 1.5, kGuideDash));
   f.strokes.push_back(segment(at(0, 0), at(90, 0), kAxis, 1.5));
   f.strokes.push_back(segment(at(0, 0), at(0, ymax), kAxis, 1.5));
   for (size_t i = 0; i < curves.size(); ++i) {
-    Stroke s{{}, series_colour(i), 2.0};
-    for (const AlbedoPoint& p : curves[i]) s.points.push_back(at(p.theta_deg, channel_value(p.albedo, c)));
-    f.strokes.push_back(s);
+    std::vector<dvec2> points;
+    for (const AlbedoPoint& p : curves[i]) points.push_back(at(p.theta_deg, channel_value(p.albedo, c)));
+    add_curve(f, std::move(points), i, curves.size());
   }
   f.labels.push_back({{20, 24}, fmt::format("directional albedo E(θv) = ∫ f(v, l) cos θl dl, {}", channel), "start", 13});
   f.labels.push_back({{(x0 + x1) / 2, y1 + 34}, "view angle θv", "middle", 12});

@@ -12,7 +12,7 @@ namespace facet::tool {
 int bench_command(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   if (argc < 2 || std::string(argv[1]) != "accuracy") {
     err << "usage: facet bench accuracy [--device D] [--width W --height H] [-K N] [--frames N] [--no-gpu] "
-           "[--validation] --out report.html|report.json\n";
+           "[--validation] [--from study.json] --out report.html|report.json|chart.svg\n";
     return 2;
   }
   std::vector<std::string> args(argv + 2, argv + argc);

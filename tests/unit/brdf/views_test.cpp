@@ -116,12 +116,15 @@ TEST(BrdfViews, OverlaidPlotsDrawOnePolylinePerModelWithItsLegend) {
                                          "--points", "5", "--quadrature", "24"});
     ASSERT_EQ(r.code, 0) << r.err;
     std::string svg = test::read_bytes(out);
-    // Series polylines are the ones drawn in the series colours at width 2.
-    for (const char* colour : {"#1f77b4", "#d62728"}) {
-      EXPECT_NE(svg.find(std::string("stroke=\"") + colour + "\" stroke-width=\"2\""), std::string::npos)
-          << view << " " << colour;
-    }
-    EXPECT_EQ(svg.find("stroke=\"#2ca02c\" stroke-width=\"2\""), std::string::npos) << view;
+    // One curve per model, in its series style (the first solid, the
+    // second dashed), each with markers of its own shape.
+    EXPECT_NE(svg.find(R"(class="curve" data-series="0" fill="none" stroke="#1f77b4" stroke-width="2" points=)"),
+              std::string::npos) << view;
+    EXPECT_NE(svg.find(R"(class="curve" data-series="1" fill="none" stroke="#d62728" stroke-width="2" stroke-dasharray="9 4")"),
+              std::string::npos) << view;
+    EXPECT_EQ(svg.find(R"(data-series="2")"), std::string::npos) << view;
+    EXPECT_NE(svg.find(R"(class="marker" data-shape="circle" data-series="0")"), std::string::npos) << view;
+    EXPECT_NE(svg.find(R"(class="marker" data-shape="square" data-series="1")"), std::string::npos) << view;
     EXPECT_NE(svg.find(">ggx:roughness=0.3,f0=0.04<"), std::string::npos) << view;
     EXPECT_NE(svg.find(">beckmann:roughness=0.3,f0=0.04<"), std::string::npos) << view;
   }

@@ -40,10 +40,27 @@ struct StudyOptions {
 };
 
 struct Study {
-  std::string device;  // the device's description, "" without GPU timing
+  std::string device;       // the device's description, "" without GPU timing
+  std::string device_type;  // "cpu", "discrete-gpu", ... (device_type_name); "" when not recorded
   StudyOptions options;
   std::vector<StudyRow> rows;
 };
+
+// True when the times come from a CPU implementation of Vulkan (lavapipe,
+// SwiftShader): the device type says so, or, for a study that did not
+// record it, the device's name does. Such times rank rows only.
+bool timed_on_cpu(const Study& study);
+
+// What a row's error measures; the chart draws one panel per kind.
+enum class ErrorKind {
+  none,       // a reference row (metric "-")
+  lobe,       // relative L1 of a lobe against the reference lobe
+  energy,     // directional albedo above 1, or energy lost
+  pointwise,  // the largest absolute difference over the input range
+  fp16,       // the largest relative error of a half-precision form
+};
+// From the row's metric text (so that studies read from JSON classify too).
+ErrorKind error_kind(const StudyRow& row);
 
 // Every row of the catalogue, errors computed, costs measured. Errors
 // (no device, a kernel that does not compile) are diagnostics.
@@ -53,12 +70,21 @@ Result<Study> run_study(const StudyOptions& options, Diagnostics& diags);
 std::vector<StudyRow> compute_errors();
 
 std::string study_json(const Study& study);
-// One self-contained page: the table and a Pareto chart (error vs ns per
-// evaluation, log-log) in inline SVG.
+// A study written by study_json (device_type may be missing: older files).
+Result<Study> study_from_json(const std::string& text);
+// The Pareto chart as one SVG: one panel per ErrorKind (error against GPU
+// time per evaluation, log-log, all panels on the same time axis), points
+// coloured by the row's group (its model family), filled where Pareto-optimal
+// within the family and panel, every point labelled without overlaps
+// (facet/runtime/chart.h), and a caveat line when timed_on_cpu. Without
+// timed rows: a one-line SVG that says so.
+std::string study_chart_svg(const Study& study);
+// One self-contained page: the chart and the table.
 std::string study_html(const Study& study);
 
 // `facet bench accuracy [--device D] [--width W --height H] [-K N] [--frames N]
-//  [--no-gpu] [--validation] --out report.html|report.json`; returns the exit code.
+//  [--no-gpu] [--validation] [--from study.json] --out report.html|report.json|chart.svg`;
+// --from redraws a study written before instead of measuring. Returns the exit code.
 int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace facet::runtime::accuracy
