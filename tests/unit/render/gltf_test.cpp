@@ -6,6 +6,7 @@
 // message naming the file and the glTF value, and no output.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -223,6 +224,33 @@ TEST_F(GltfRender, TheBaseColourTextureShowsUprightThroughAnUnlitShader) {
     SCOPED_TRACE(name);
     expect_quadrants(frame);
   }
+}
+
+// A file written by Blender's own glTF exporter (Blender 3.4, Debian's
+// package; tests/data/gltf/blender/make_quad.py regenerates it): a 2 x 2
+// quad facing the camera whose base colour texture has a red, green, blue
+// and white quadrant. It renders upright, not mirrored, with its texture.
+TEST_F(GltfRender, AQuadExportedByBlenderRendersWithItsTexture) {
+  std::string mesh = std::string(FACET_SOURCE_DIR) + "/tests/data/gltf/blender/quad.gltf";
+  RenderedFrame frame = render("blender_quad", small_scene(gltf_object(mesh, unlit_texture_shader())));
+  ASSERT_EQ(frame.width, 64);
+  // Quadrant centres at (+-0.5, +-0.5) on the plane z = 0, 3 units from the
+  // camera with a 40 degree field of view: 14.6 pixels from the centre.
+  struct Probe {
+    int x, y;
+    std::array<int, 3> colour;
+  };
+  for (const Probe& p : {Probe{17, 17, {255, 0, 0}}, Probe{47, 17, {0, 255, 0}}, Probe{17, 47, {0, 0, 255}},
+                         Probe{47, 47, {255, 255, 255}}}) {
+    const uint8_t* px = &frame.ldr[size_t(p.y * 64 + p.x) * 4];
+    for (int c = 0; c < 3; ++c) {
+      // Bilinear filtering of the 2 x 2 texture blends a little of the
+      // neighbouring texels in (up to 52 of 255 after sRGB encoding).
+      EXPECT_NEAR(px[c], p.colour[size_t(c)], 64) << "(" << p.x << ", " << p.y << ") channel " << c;
+    }
+  }
+  const uint8_t* outside = &frame.ldr[size_t(32 * 64 + 63) * 4];
+  EXPECT_EQ(outside[0] + outside[1] + outside[2], 0) << "the quad ends before the image's edge";
 }
 
 // The same quad as a triangle strip (1, 2, 0, 3) and a fan (0, 1, 2, 3).
