@@ -28,14 +28,55 @@ std::optional<std::string> read_name(std::istream& file, size_t max_length) {
   return std::nullopt;
 }
 
+// The box2i value of a dataWindow (xMin, yMin, xMax, yMax), read past.
+std::optional<std::string> data_window_problem(std::istream& file, const ImageLimits& limits) {
+  int64_t box[4];
+  for (int64_t& v : box) {
+    std::optional<uint32_t> word = read_u32(file);
+    if (!word) return std::string("the EXR file ends inside its dataWindow");
+    v = int32_t(*word);
+  }
+  const int64_t width = box[2] - box[0] + 1, height = box[3] - box[1] + 1;
+  if (width <= 0 || height <= 0) {
+    return fmt::format("the EXR dataWindow ({}, {}) - ({}, {}) is empty", box[0], box[1], box[2], box[3]);
+  }
+  if (std::optional<std::string> problem = image_size_problem(uint64_t(width), uint64_t(height), limits)) {
+    return "the EXR dataWindow: " + *problem;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLimits& limits) {
+  char magic[2] = {};
+  if (!file.read(magic, 2) || magic[0] != 'B' || magic[1] != 'M') return std::nullopt;
+  file.seekg(14);
+  std::optional<uint32_t> header_size = read_u32(file);
+  std::optional<uint32_t> w = read_u32(file), h = read_u32(file);
+  if (!header_size || !w || !h) return std::string("the BMP file ends inside its header");
+  int64_t width = 0, height = 0;
+  if (*header_size == 12) {  // OS/2 BITMAPCOREHEADER: 16-bit sides
+    width = *w & 0xffff;
+    height = (*w >> 16) & 0xffff;
+  } else {
+    width = int32_t(*w);
+    height = int32_t(*h);
+  }
+  height = height < 0 ? -height : height;  // negative: stored top-down
+  if (width <= 0 || height <= 0) return fmt::format("the BMP header declares {}x{} pixels", width, height);
+  if (std::optional<std::string> problem = image_size_problem(uint64_t(width), uint64_t(height), limits)) {
+    return "the BMP header: " + *problem;
+  }
+  return std::nullopt;
+}
 
 bool is_exr(std::istream& file) {
   std::optional<uint32_t> magic = read_u32(file);
   return magic && *magic == 20000630;  // 76 2f 31 01
 }
 
-std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size) {
+std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size, const ImageLimits& limits) {
   if (!is_exr(file)) return std::string("not an OpenEXR file");
   std::optional<uint32_t> version = read_u32(file);
   if (!version) return std::string("the EXR file ends inside its version field");
@@ -59,6 +100,10 @@ std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_
       const uint64_t left = here < 0 ? 0 : file_size - uint64_t(here);
       if (declared < 0 || uint64_t(declared) > left) {
         return fmt::format("the EXR attribute '{}' declares {} bytes; the file has {} left", *name, declared, left);
+      }
+      if (*name == "dataWindow" && *type == "box2i" && declared == 16) {
+        if (std::optional<std::string> problem = data_window_problem(file, limits)) return problem;
+        continue;
       }
       file.seekg(declared, std::ios::cur);
     }

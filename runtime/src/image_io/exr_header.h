@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 
+#include "image_io/image_io.h"
+
 namespace facet::runtime {
 
 // True when `file` starts with OpenEXR's magic number.
@@ -18,7 +20,13 @@ bool is_exr(std::istream& file);
 // Why the EXR header in `file` (of `file_size` bytes, read from its start)
 // cannot be right, or nullopt when every attribute of every part's header
 // fits in the file: a negative size, a value running past the end, a name
-// without its terminating NUL within OpenEXR's length limit.
-std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size);
+// without its terminating NUL within OpenEXR's length limit, or a
+// dataWindow that is empty or larger than `limits` (OpenEXR allocates for
+// the data window when the file opens, before any pixel is read).
+std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size, const ImageLimits& limits);
+
+// The same for a BMP's declared size (OpenImageIO decodes RLE-compressed
+// BMPs when it opens them); nullopt for a file that is not a BMP.
+std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLimits& limits);
 
 }  // namespace facet::runtime

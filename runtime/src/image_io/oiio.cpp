@@ -20,22 +20,41 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
   return {};
 }
 
-// OpenEXR trusts its header's sizes (exr_header.h); other formats go to
-// OpenImageIO as they are.
-std::optional<std::string> header_problem(const std::string& path) {
+// OpenEXR trusts its header's sizes and OpenImageIO decodes RLE BMPs while
+// opening them (exr_header.h): both headers are checked first; other
+// formats go to OpenImageIO as they are.
+std::optional<std::string> header_problem(const std::string& path, const ImageLimits& limits) {
   std::ifstream file(path, std::ios::binary);
-  if (!file || !is_exr(file)) return std::nullopt;
+  if (!file) return std::nullopt;
+  if (std::optional<std::string> problem = bmp_header_problem(file, limits)) return problem;
+  file.clear();
+  file.seekg(0);
+  if (!is_exr(file)) return std::nullopt;
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);
   if (error) return std::nullopt;
   file.seekg(0);
-  return exr_header_problem(file, size);
+  return exr_header_problem(file, size, limits);
 }
+
+Result<DecodedImage, std::string> decode(const std::string& path, const ImageLimits& limits);
 
 }  // namespace
 
+// OpenImageIO's readers may throw (a length_error from a corrupt file's
+// declared size): any exception is a clear error, never a crash.
 Result<DecodedImage, std::string> read_image_file(const std::string& path, const ImageLimits& limits) {
-  if (std::optional<std::string> problem = header_problem(path)) return unexpected(*problem);
+  if (std::optional<std::string> problem = header_problem(path, limits)) return unexpected(*problem);
+  try {
+    return decode(path, limits);
+  } catch (const std::exception& e) {
+    return unexpected(fmt::format("cannot read the image ({})", e.what()));
+  }
+}
+
+namespace {
+
+Result<DecodedImage, std::string> decode(const std::string& path, const ImageLimits& limits) {
   auto input = OIIO::ImageInput::open(path);
   if (!input) return unexpected(fmt::format("cannot read the image ({})", OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
@@ -56,6 +75,8 @@ Result<DecodedImage, std::string> read_image_file(const std::string& path, const
   }
   return image;
 }
+
+}  // namespace
 
 Result<void, std::string> write_image_file(const std::string& path, int width, int height, const uint8_t* rgba8) {
   return write(path, width, height, OIIO::TypeDesc::UINT8, rgba8);

@@ -398,6 +398,38 @@ TEST_P(HostileExr, RenderExitsOneNamingTheTexture) {
 INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
                          [](const ::testing::TestParamInfo<ExrCase>& info) { return std::string(info.param.name); });
 
+// Inputs fuzz_image found (16 workers on the GPU host, 2026-12-04), kept in
+// tests/fuzz/corpus/image: a 54-byte RLE BMP declaring 738,197,508 rows made
+// OpenImageIO throw std::length_error while opening it (an uncaught
+// exception: the process ended); EXR files whose dataWindow is 50 million
+// pixels wide made OpenEXR allocate and free for over 30 s under ASan.
+// Both headers are checked before OpenImageIO opens the file.
+struct FuzzFoundImage {
+  const char* file;
+  const char* expected;
+};
+
+class FuzzFoundImages : public ::testing::TestWithParam<FuzzFoundImage> {};
+
+TEST_P(FuzzFoundImages, RenderExitsOneNamingTheTexture) {
+  const FuzzFoundImage& c = GetParam();
+  std::string image = std::string(FACET_SOURCE_DIR) + "/tests/fuzz/corpus/image/" + c.file;
+  std::string name = std::string("fuzz_found_") + std::to_string(std::hash<std::string>{}(c.file) % 100000);
+  Outcome r = render_expecting_failure(name, write_scene(name, textured_scene(image)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find(".json: objects[0].material.properties._MainTex: " + image + ": " + c.expected),
+            std::string::npos)
+      << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, FuzzFoundImages,
+    ::testing::Values(FuzzFoundImage{"bmp-rle-738197508-rows.bmp", "the BMP header: the image is 4x738197508 pixels"},
+                      FuzzFoundImage{"bmp-rle-tall-2.bmp", "the BMP header: "},
+                      FuzzFoundImage{"exr-data-window-50331655-wide.exr", "the EXR dataWindow: the image is "},
+                      FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "}),
+    [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
+
 // The negative control: the real file renders, so the header walk passes
 // what OpenEXR writes and the cases above fail for their attribute alone.
 TEST(HostileExrControl, TheRealExrRenders) {
