@@ -306,22 +306,8 @@ TEST_F(GltfRender, TheMetallicRoughnessTextureBecomesUnitysMetallicGlossMap) {
 
 // ---------------------------------------------------------------- bad files
 
-struct Outcome {
-  int code = 0;
-  std::string err;
-};
-
-Outcome render_expecting_failure(const std::string& name, const std::string& scene_path) {
-  std::string png = (test_dir() / (name + ".out.png")).string();
-  std::filesystem::remove(png);
-  std::vector<const char*> argv = {"render", scene_path.c_str(), "-o", png.c_str()};
-  std::ostringstream out, err;
-  Outcome r;
-  r.code = tool::render_command(int(argv.size()), argv.data(), out, err);
-  r.err = err.str();
-  EXPECT_FALSE(std::filesystem::exists(png)) << "an output was written for " << name;
-  return r;
-}
+using Outcome = test_support::RenderOutcome;
+using test_support::render_expecting_failure;
 
 struct HostileGltfCase {
   const char* name;

@@ -26,24 +26,8 @@ using test_support::small_scene;
 using test_support::test_dir;
 using test_support::write_scene;
 
-struct Outcome {
-  int code = 0;
-  std::string out, err;
-};
-
-// `facet render <scene> -o <name>.png`, checking that nothing was written.
-Outcome render_expecting_failure(const std::string& name, const std::string& scene_path) {
-  std::string png = (test_dir() / (name + ".out.png")).string();
-  std::filesystem::remove(png);
-  std::vector<const char*> argv = {"render", scene_path.c_str(), "-o", png.c_str()};
-  std::ostringstream out, err;
-  Outcome r;
-  r.code = tool::render_command(int(argv.size()), argv.data(), out, err);
-  r.out = out.str();
-  r.err = err.str();
-  EXPECT_FALSE(std::filesystem::exists(png)) << "an output was written for " << name;
-  return r;
-}
+using Outcome = test_support::RenderOutcome;
+using test_support::render_expecting_failure;
 
 std::string write_file(const std::string& name, const std::string& bytes) {
   std::filesystem::path path = test_dir() / name;

@@ -7,8 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "facet/commands.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
 #include "unit/runtime/context_fixture.h"
@@ -25,6 +28,26 @@ inline std::filesystem::path test_dir() {
       std::filesystem::temp_directory_path() / ("facet_render_tests." + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+struct RenderOutcome {
+  int code = 0;
+  std::string out, err;
+};
+
+// `facet render <scene> -o <name>.png` in process, checking that nothing was
+// written (the bad-input tests expect a failure).
+inline RenderOutcome render_expecting_failure(const std::string& name, const std::string& scene_path) {
+  std::string png = (test_dir() / (name + ".out.png")).string();
+  std::filesystem::remove(png);
+  std::vector<const char*> argv = {"render", scene_path.c_str(), "-o", png.c_str()};
+  std::ostringstream out, err;
+  RenderOutcome r;
+  r.code = tool::render_command(int(argv.size()), argv.data(), out, err);
+  r.out = out.str();
+  r.err = err.str();
+  EXPECT_FALSE(std::filesystem::exists(png)) << "an output was written for " << name;
+  return r;
 }
 
 // Removes this process's folder at exit.
