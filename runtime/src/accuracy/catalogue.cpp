@@ -257,18 +257,6 @@ void add_fresnel(std::vector<RowSpec>& out) {
                      }));
 }
 
-// A model of the lighting-model table (facet/reference/models.h) at the
-// given parameters, as the scalar lobe the integrals read (its red channel:
-// the rows below use white albedos and f0 = 1).
-Lobe model_lobe(std::string_view id, std::map<std::string, dvec3> params = {}) {
-  ref::LocalBrdf f = ref::model_brdf(id, params);
-  return [f](const dvec3& v, const dvec3& l) { return f(v, l).x; };
-}
-// Cook-Torrance GGX with F = 1 at alpha (the model's parameter is r = sqrt(alpha)).
-Lobe ggx_model_lobe(double alpha) {
-  return model_lobe("ggx", {{"roughness", dvec3(std::sqrt(alpha))}, {"f0", dvec3(1.0)}});
-}
-
 void add_diffuse(std::vector<RowSpec>& out) {
   out.push_back(spec("Fd_Lambert", "diffuse", "Lambert 1/pi", "albedo <= 1", "albedo excess over 1", "exactly 1",
                      kFacet, "value = FacetFd_Lambert() * p0;", [](StudyRow& r) {
@@ -390,13 +378,6 @@ void add_specular(std::vector<RowSpec>& out) {
                        r.error = worst;
                        r.detail = "E from the DFG integral (4,096 samples), a = .1/.5/1";
                      }));
-}
-
-// Unity's tiers for a white light with no indirect light and spec colour 1
-// (metallic 1, white albedo); the reference lobe is D_GGX * V_correlated with F = 1.
-Lobe unity_lobe(int tier, double smoothness) {
-  return model_lobe("unity-brdf" + std::to_string(tier),
-                    {{"albedo", dvec3(1.0)}, {"metallic", dvec3(1.0)}, {"smoothness", dvec3(smoothness)}});
 }
 
 void add_standard(std::vector<RowSpec>& out) {

@@ -50,6 +50,9 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
   app.add_option("--height", options.height, "invocation grid height")->check(CLI::Range(1u, 8192u));
   app.add_option("-K,--evaluations", options.evaluations, "evaluations per invocation")->check(CLI::Range(1u, 1024u));
   app.add_option("--frames", options.frames, "timed dispatches (median)")->check(CLI::Range(1u, 10000u));
+  app.add_option("--image-samples", options.image_samples,
+                 "samples per pixel of the Monte Carlo reference render (0: no image errors)")
+      ->check(CLI::Range(0u, 1u << 20));
   app.add_flag("--no-gpu", no_gpu, "errors and instruction counts only");
   app.add_flag("--validation", options.validation, "Vulkan validation layers on");
   std::vector<std::string> reversed(args.rbegin(), args.rend());

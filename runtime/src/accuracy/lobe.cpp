@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "facet/reference/models.h"
+
 namespace facet::runtime::accuracy {
 namespace {
 
@@ -52,6 +54,21 @@ LobeComparison compare_lobes(const Lobe& approx, const Lobe& reference, const gl
     app += a * weight;
   });
   return {ref > 0 ? diff / ref : 0.0, ref > 0 ? app / ref : 1.0};
+}
+
+Lobe model_lobe(std::string_view id, const std::map<std::string, glm::dvec3>& params) {
+  facet::reference::LocalBrdf f = facet::reference::model_brdf(id, params);
+  return [f](const glm::dvec3& v, const glm::dvec3& l) { return f(v, l).x; };
+}
+
+Lobe ggx_model_lobe(double alpha) {
+  return model_lobe("ggx", {{"roughness", glm::dvec3(std::sqrt(alpha))}, {"f0", glm::dvec3(1.0)}});
+}
+
+Lobe unity_lobe(int tier, double smoothness) {
+  return model_lobe("unity-brdf" + std::to_string(tier), {{"albedo", glm::dvec3(1.0)},
+                                                         {"metallic", glm::dvec3(1.0)},
+                                                         {"smoothness", glm::dvec3(smoothness)}});
 }
 
 }  // namespace facet::runtime::accuracy

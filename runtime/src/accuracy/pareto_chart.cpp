@@ -1,5 +1,6 @@
 // The Pareto chart of the study as SVG: a header (device, caveat, family
-// colours), one panel per error kind on a shared log time axis, point labels
+// colours), a panel of image errors (every row with one, on one axis) and
+// one panel per error kind, on a shared log time axis, point labels
 // placed by chart::place_labels, and a numbered legend for the labels that
 // did not fit.
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "facet/markup.h"
 #include "facet/runtime/accuracy.h"
@@ -36,29 +38,41 @@ std::string family_colour(const std::string& group) {
   return kOtherFamily;
 }
 
+double headline_error(const StudyRow& r) { return r.error; }
+double image_rmse(const StudyRow& r) {
+  const ImageError* worst = worst_image_error(r);
+  return worst ? worst->rmse : 0.0;
+}
+
+// A panel: which rows it draws and what its error axis reads.
 struct PanelKind {
-  ErrorKind kind;
+  std::optional<ErrorKind> kind;  // none: the image panel (rows with image errors)
   const char* title;
   const char* axis;
+  double (*error)(const StudyRow&);
+  bool member(const StudyRow& r) const { return kind ? error_kind(r) == *kind : !r.image.empty(); }
 };
 constexpr PanelKind kPanels[] = {
-    {ErrorKind::lobe, "Lobe error: max relL1 = ∫|f − f_ref|·cos / ∫f_ref·cos over the hemisphere", "relL1"},
-    {ErrorKind::energy, "Energy error: directional albedo above 1, or energy lost", "energy error"},
-    {ErrorKind::pointwise, "Pointwise error: largest absolute difference over the input range", "max abs error"},
-    {ErrorKind::fp16, "Half precision: largest relative error against fp64", "rel. error"},
+    {std::nullopt, "Image error: RMSE in the worst test scene against the Monte Carlo reference", "image RMSE", image_rmse},
+    {ErrorKind::lobe, "Lobe error: max relL1 = ∫|f − f_ref|·cos / ∫f_ref·cos over the hemisphere", "relL1", headline_error},
+    {ErrorKind::energy, "Energy error: directional albedo above 1, or energy lost", "energy error", headline_error},
+    {ErrorKind::pointwise, "Pointwise error: largest absolute difference over the input range", "max abs error", headline_error},
+    {ErrorKind::fp16, "Half precision: largest relative error against fp64", "rel. error", headline_error},
 };
 
 bool timed(const StudyRow& r) { return r.ns_per_eval && *r.ns_per_eval > 0; }
-bool drawable(const StudyRow& r) { return timed(r) && r.error > 0 && std::isfinite(r.error); }
+bool drawable(const StudyRow& r, const PanelKind& k) {
+  double e = k.error(r);
+  return timed(r) && e > 0 && std::isfinite(e);
+}
 
 // Pareto-optimal within its family and panel: no other such row is both
 // cheaper and more accurate.
-bool pareto(const StudyRow& r, const std::vector<const StudyRow*>& panel) {
+bool pareto(const StudyRow& r, const std::vector<const StudyRow*>& panel, const PanelKind& k) {
   for (const StudyRow* o : panel) {
     if (o == &r || o->group != r.group) continue;
-    if (*o->ns_per_eval <= *r.ns_per_eval && o->error <= r.error && (*o->ns_per_eval < *r.ns_per_eval || o->error < r.error)) {
-      return false;
-    }
+    double oe = k.error(*o), re = k.error(r);
+    if (*o->ns_per_eval <= *r.ns_per_eval && oe <= re && (*o->ns_per_eval < *r.ns_per_eval || oe < re)) return false;
   }
   return true;
 }
@@ -176,8 +190,8 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
   std::vector<const StudyRow*> points;
   std::string off_chart;
   for (const StudyRow* r : rows) {
-    if (drawable(*r)) points.push_back(r);
-    else if (timed(*r) && !std::isfinite(r->error)) off_chart += (off_chart.empty() ? "" : ", ") + r->id + " (inf: overflow)";
+    if (drawable(*r, kind)) points.push_back(r);
+    else if (timed(*r) && !std::isfinite(kind.error(*r))) off_chart += (off_chart.empty() ? "" : ", ") + r->id + " (inf: overflow)";
   }
   p.svg += text(12, top + 14, 12, kind.title, R"(class="panel-title" font-weight="bold")");
   double y = top + 14;
@@ -188,7 +202,7 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
   const double height = points.size() <= 2 ? kPanelHeight * 0.6 : kPanelHeight;
   const chart::Box area{kLeft, y + 14, kWidth - kRight, y + 14 + height};
   double lo = 1e300, hi = 0;
-  for (const StudyRow* r : points) lo = std::min(lo, r->error), hi = std::max(hi, r->error);
+  for (const StudyRow* r : points) lo = std::min(lo, kind.error(*r)), hi = std::max(hi, kind.error(*r));
   LogAxis y_axis = log_axis(lo, hi, area.y1, area.y0);
   LogAxis x = x_axis;
   p.svg += axes(x, y_axis, area, kind.axis);
@@ -198,7 +212,7 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
                                .font_size = kLabelSize,
                                .first_number = first_number};
   for (const StudyRow* r : points) {
-    double px = x.at(*r->ns_per_eval), py = y_axis.at(r->error);
+    double px = x.at(*r->ns_per_eval), py = y_axis.at(kind.error(*r));
     requests.push_back({px, py, kMarker, r->id});
     options.obstacles.push_back(chart::square_around(px, py, kMarker + 1));
   }
@@ -207,10 +221,10 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
   for (size_t i = 0; i < points.size(); ++i) {
     const StudyRow& r = *points[i];
     const chart::PlacedLabel& l = layout.labels[i];
-    marks += fmt::format(R"(<g><title>{}: error {:.3g}, {:.3g} ps</title>{}</g>)", xml_escape(r.id), r.error,
+    marks += fmt::format(R"(<g><title>{}: error {:.3g}, {:.3g} ps</title>{}</g>)", xml_escape(r.id), kind.error(r),
                          *r.ns_per_eval * 1000,
                          chart::marker_svg(chart::MarkerShape::circle, requests[i].x, requests[i].y, kMarker,
-                                           family_colour(r.group), pareto(r, points),
+                                           family_colour(r.group), pareto(r, points, kind),
                                            fmt::format(R"(class="point" data-id="{}")", xml_escape(r.id))));
     if (l.has_leader) {
       leaders += fmt::format(R"(<line class="leader" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}"/>)",
@@ -230,14 +244,17 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
 }  // namespace
 
 std::string study_chart_svg(const Study& study) {
-  std::map<ErrorKind, std::vector<const StudyRow*>> by_kind;
+  std::vector<std::vector<const StudyRow*>> panel_rows(std::size(kPanels));
   std::vector<std::string> families;
   double lo = 1e300, hi = 0;
   for (const StudyRow& r : study.rows) {
-    if (!timed(r) || error_kind(r) == ErrorKind::none) continue;
-    by_kind[error_kind(r)].push_back(&r);
-    if (std::find(families.begin(), families.end(), r.group) == families.end()) families.push_back(r.group);
-    if (drawable(r)) lo = std::min(lo, *r.ns_per_eval), hi = std::max(hi, *r.ns_per_eval);
+    if (!timed(r)) continue;
+    for (size_t k = 0; k < std::size(kPanels); ++k) {
+      if (!kPanels[k].member(r)) continue;
+      panel_rows[k].push_back(&r);
+      if (std::find(families.begin(), families.end(), r.group) == families.end()) families.push_back(r.group);
+      if (drawable(r, kPanels[k])) lo = std::min(lo, *r.ns_per_eval), hi = std::max(hi, *r.ns_per_eval);
+    }
   }
   if (hi == 0) {
     return R"(<svg xmlns="http://www.w3.org/2000/svg" width="560" height="24" font-family="DejaVu Sans, sans-serif">)"
@@ -257,12 +274,11 @@ std::string study_chart_svg(const Study& study) {
   std::string body = h.svg;
   std::vector<std::string> legend;
   double y = h.height;
-  for (const PanelKind& k : kPanels) {
-    auto rows = by_kind.find(k.kind);
-    if (rows == by_kind.end() || std::none_of(rows->second.begin(), rows->second.end(), [](const StudyRow* r) { return drawable(*r); })) {
-      continue;
-    }
-    Panel p = panel(k, rows->second, x_axis, y, int(legend.size()) + 1);
+  for (size_t i = 0; i < std::size(kPanels); ++i) {
+    const PanelKind& k = kPanels[i];
+    const std::vector<const StudyRow*>& rows = panel_rows[i];
+    if (std::none_of(rows.begin(), rows.end(), [&](const StudyRow* r) { return drawable(*r, k); })) continue;
+    Panel p = panel(k, rows, x_axis, y, int(legend.size()) + 1);
     body += p.svg;
     legend.insert(legend.end(), p.legend.begin(), p.legend.end());
     y += p.height;

@@ -27,6 +27,48 @@ std::string string_of(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
+// JSON has no infinity: an image error that overflowed is written "inf".
+nlohmann::ordered_json finite_or_inf(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json("inf");
+}
+double number_or_inf(const nlohmann::json& j, const char* key) {
+  auto it = j.find(key);
+  if (it != j.end() && it->is_string() && it->get<std::string>() == "inf") return std::numeric_limits<double>::infinity();
+  return number(j, key);
+}
+
+nlohmann::ordered_json image_json(const StudyRow& r) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const ImageError& e : r.image) {
+    out.push_back({{"scene", e.scene}, {"rmse", finite_or_inf(e.rmse)}, {"max_error", finite_or_inf(e.max_error)},
+                   {"noise", finite_or_inf(e.noise)}});
+  }
+  return out;
+}
+std::vector<ImageError> image_from_json(const nlohmann::json& j) {
+  std::vector<ImageError> out;
+  auto it = j.find("image");
+  if (it == j.end() || !it->is_array()) return out;
+  for (const nlohmann::json& e : *it) {
+    if (!e.is_object()) continue;
+    out.push_back({.scene = string_of(e, "scene"), .rmse = number_or_inf(e, "rmse"),
+                   .max_error = number_or_inf(e, "max_error"), .noise = number_or_inf(e, "noise")});
+  }
+  return out;
+}
+
+// "0.0123 (sky)": the figure of the scene where it is largest, or "-" for a
+// row without image errors.
+std::string image_cell(const StudyRow& r, double ImageError::*figure) {
+  const ImageError* worst = nullptr;
+  for (const ImageError& e : r.image) {
+    if (!worst || !(e.*figure <= worst->*figure)) worst = &e;
+  }
+  if (!worst) return "-";
+  double v = worst->*figure;
+  return fmt::format("{} ({})", std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("inf"), worst->scene);
+}
+
 Result<StudyRow> row_from_json(const nlohmann::json& j) {
   if (!j.is_object() || !j.contains("id") || !j["id"].is_string()) return failure("a row without an 'id'");
   StudyRow r{.id = string_of(j, "id"), .group = string_of(j, "group"), .name = string_of(j, "name"),
@@ -35,6 +77,8 @@ Result<StudyRow> row_from_json(const nlohmann::json& j) {
              .spirv_instructions = uint32_t(number(j, "spirv_instructions"))};
   if (j.contains("error_is_infinite") && j["error_is_infinite"].is_boolean() && j["error_is_infinite"].get<bool>()) r.error = std::numeric_limits<double>::infinity();
   if (j.contains("ns_per_eval") && j["ns_per_eval"].is_number()) r.ns_per_eval = j["ns_per_eval"].get<double>();
+  r.image = image_from_json(j);
+  r.image_how = string_of(j, "image_how");
   return r;
 }
 
@@ -69,6 +113,7 @@ Result<Study> study_from_json(const std::string& text) {
   }
   study.options.evaluations = uint32_t(number(j, "evaluations_per_invocation", study.options.evaluations));
   study.options.frames = uint32_t(number(j, "frames", study.options.frames));
+  study.options.image_samples = uint32_t(number(j, "image_samples", 0));
   for (const nlohmann::json& r : j["rows"]) {
     Result<StudyRow> row = row_from_json(r);
     if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
@@ -88,6 +133,10 @@ std::string study_json(const Study& study) {
       j["error_is_infinite"] = true;
     }
     j["ns_per_eval"] = r.ns_per_eval ? nlohmann::ordered_json(*r.ns_per_eval) : nlohmann::ordered_json(nullptr);
+    if (!r.image.empty()) {
+      j["image"] = image_json(r);
+      j["image_how"] = r.image_how;
+    }
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
@@ -95,6 +144,7 @@ std::string study_json(const Study& study) {
                              {"grid", {study.options.width, study.options.height}},
                              {"evaluations_per_invocation", study.options.evaluations},
                              {"frames", study.options.frames},
+                             {"image_samples", study.options.image_samples},
                              {"rows", rows}};
   return out.dump(2) + "\n";
 }
@@ -109,14 +159,21 @@ std::string study_html(const Study& study) {
                       "minus a null pass.</p>\n",
                       xml_escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
+  if (study.options.image_samples > 0) {
+    html += fmt::format("<p>Image errors: the test scenes rendered by the Monte Carlo reference, {} samples per pixel; "
+                        "RMSE and largest error of the worst scene, in linear radiance (white furnace = 1).</p>\n",
+                        study.options.image_samples);
+  }
   html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
+          "<th>image RMSE</th><th>image max</th><th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
   for (const StudyRow& r : study.rows) {
-    html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td>"
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td>"
+                        "<td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>"
                         "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
                         xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
-                        r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), xml_escape(r.detail),
+                        r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"),
+                        image_cell(r, &ImageError::rmse), image_cell(r, &ImageError::max_error), xml_escape(r.detail),
                         xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
   }
   return html + "</table>\n</body></html>\n";

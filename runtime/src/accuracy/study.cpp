@@ -118,6 +118,14 @@ Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>
 
 }  // namespace
 
+const ImageError* worst_image_error(const StudyRow& row) {
+  const ImageError* worst = nullptr;
+  for (const ImageError& e : row.image) {
+    if (!worst || !(e.rmse <= worst->rmse)) worst = &e;
+  }
+  return worst;
+}
+
 std::vector<StudyRow> compute_errors() {
   std::vector<StudyRow> rows;
   for (const RowSpec& s : catalogue()) {
@@ -145,6 +153,8 @@ Result<Study> run_study(const StudyOptions& options, Diagnostics& diags) {
     auto measured = measure_gpu(options, specs, study, diags);
     FACET_TRY(measured);
   }
+  // Last: the CPU's longest part, after everything that can fail.
+  if (options.image_samples > 0) compute_image_errors(study.rows, options.image_samples);
   return study;
 }
 

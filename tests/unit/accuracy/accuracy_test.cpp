@@ -73,7 +73,7 @@ TEST(AccuracyStudyTest, ErrorsAgreeWithTheMeasuredAnchors) {
 TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructions) {
   (void)test_support::kLavapipePinned;
   Diagnostics diags;
-  StudyOptions options{.validation = true, .width = 16, .height = 16, .evaluations = 2, .frames = 1};
+  StudyOptions options{.validation = true, .width = 16, .height = 16, .evaluations = 2, .frames = 1, .image_samples = 4};
   auto study = run_study(options, diags);
   ASSERT_TRUE(study) << (diags.size() ? diags.all()[0].message : "");
   EXPECT_FALSE(study->device.empty());
@@ -101,12 +101,16 @@ TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructio
   });
   EXPECT_EQ(html.find("class=\"pareto\"") != std::string::npos, chartable);
   EXPECT_EQ(html.find("No row has both an error and a GPU time") != std::string::npos, !chartable);
-  // With times, every row with an error is a point of the chart.
+  // With times, every row with an error is a point of the chart, in its
+  // error kind's panel and in the image panel.
   Study timed = *study;
   size_t with_error = 0;
   for (size_t i = 0; i < timed.rows.size(); ++i) {
     timed.rows[i].ns_per_eval = 1.0 + double(i);
     with_error += timed.rows[i].error > 0 && std::isfinite(timed.rows[i].error);
+    // and in the image panel, where its image error is finite and above 0
+    const ImageError* worst = worst_image_error(timed.rows[i]);
+    with_error += worst && worst->rmse > 0 && std::isfinite(worst->rmse);
   }
   std::string chart = study_html(timed);
   EXPECT_NE(chart.find("class=\"pareto\""), std::string::npos);
@@ -121,7 +125,7 @@ TEST(AccuracyCommandTest, WritesTheReportAndRejectsBadArguments) {
   fs::path dir = fs::temp_directory_path() / ("facet_accuracy_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ostringstream out, err;
-  EXPECT_EQ(run_accuracy_command({"--out", (dir / "r.json").string(), "--no-gpu"}, out, err), 0) << err.str();
+  EXPECT_EQ(run_accuracy_command({"--out", (dir / "r.json").string(), "--no-gpu", "--image-samples", "4"}, out, err), 0) << err.str();
   EXPECT_TRUE(fs::exists(dir / "r.json"));
   EXPECT_FALSE(fs::exists(dir / "r.json.tmp"));
   EXPECT_EQ(run_accuracy_command({"--out", (dir / "r.txt").string(), "--no-gpu"}, out, err), 2);

@@ -17,6 +17,17 @@
 
 namespace facet::runtime::accuracy {
 
+// A row's error in one of the study's test scenes, against the Monte Carlo
+// reference render (docs/accuracy.md, "Image-level error"): linear radiance,
+// where the white furnace renders 1 (tone-mapping and encoding rows: display
+// values in [0, 1]).
+struct ImageError {
+  std::string scene;     // "directional", "uniform" or "sky"
+  double rmse = 0;       // over the pixels the spheres cover
+  double max_error = 0;  // the largest |approximation - reference|
+  double noise = 0;      // the RMS standard error of that difference: below it, rmse is noise
+};
+
 struct StudyRow {
   std::string id;         // "V_SmithGGXCorrelatedFast"
   std::string group;      // "V", "F", "diffuse", "specular", "Standard", "IBL", "tonemap", "sRGB"
@@ -28,6 +39,8 @@ struct StudyRow {
   std::string anchor;     // the measured anchor (docs/accuracy.md, "Agreement with the measured anchors"), "" when none
   uint32_t spirv_instructions = 0;    // one evaluation, after spirv-opt, minus the null kernel
   std::optional<double> ns_per_eval;  // GPU time per evaluation, minus the null pass
+  std::vector<ImageError> image;      // per test scene; empty for reference rows
+  std::string image_how;              // how the row enters the scenes, in words
 };
 
 struct StudyOptions {
@@ -37,7 +50,11 @@ struct StudyOptions {
   uint32_t evaluations = 8;      // K: evaluations per invocation
   uint32_t frames = 11;          // timed dispatches; the median is reported
   bool gpu = true;               // false: CPU errors and static cost only
+  uint32_t image_samples = 256;  // per pixel of the Monte Carlo reference; 0: no image errors
 };
+
+// The row's worst scene by RMSE, or nullptr without image errors.
+const ImageError* worst_image_error(const StudyRow& row);
 
 struct Study {
   std::string device;       // the device's description, "" without GPU timing
@@ -68,6 +85,11 @@ Result<Study> run_study(const StudyOptions& options, Diagnostics& diags);
 
 // The CPU part only (errors), for tests: no Vulkan, no compiles.
 std::vector<StudyRow> compute_errors();
+// Fills each row's image errors: the study's test scenes rendered by the
+// Monte Carlo reference (facet/reference/monte_carlo.h) with the row's term
+// and with its exact form, `samples` directions per pixel. Reference rows
+// get none.
+void compute_image_errors(std::vector<StudyRow>& rows, uint32_t samples);
 
 std::string study_json(const Study& study);
 // A study written by study_json (device_type may be missing: older files).
