@@ -30,6 +30,12 @@ Result<Study> read_study(const std::string& path) {
   return study;
 }
 
+std::string budget_report_of(const BudgetSearch& search, const std::vector<double>& budgets, const std::string& output) {
+  if (output.ends_with(".json")) return budget_json(search, budgets);
+  if (output.ends_with(".svg")) return budget_chart_svg(search, budgets);
+  return budget_html(search, budgets);
+}
+
 std::string report_of(const Study& study, const std::string& output) {
   if (output.ends_with(".json")) return study_json(study);
   if (output.ends_with(".svg")) return study_chart_svg(study);
@@ -43,6 +49,7 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
   StudyOptions options;
   std::string output, from;
   bool no_gpu = false;
+  std::vector<double> budgets;
   app.add_option("--out,-o", output, "report.html, report.json or chart.svg (the Pareto chart alone)")->required();
   app.add_option("--from", from, "redraw a study that --out report.json wrote, instead of measuring");
   app.add_option("--device", options.device, "Vulkan device: index or name part (default: lavapipe)");
@@ -53,6 +60,10 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
   app.add_option("--image-samples", options.image_samples,
                  "samples per pixel of the Monte Carlo reference render (0: no image errors)")
       ->check(CLI::Range(0u, 1u << 20));
+  app.add_option("--budget", budgets,
+                 "an image-RMSE budget: name the cheapest combination of D, V, F and diffuse terms within it "
+                 "(repeatable; --out then holds the budget search)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--no-gpu", no_gpu, "errors and instruction counts only");
   app.add_flag("--validation", options.validation, "Vulkan validation layers on");
   std::vector<std::string> reversed(args.rbegin(), args.rend());
@@ -85,6 +96,15 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
       for (const Diagnostic& d : diags.all()) err << "facet bench accuracy: " << d.message << "\n";
       return 1;
     }
+  }
+  if (!budgets.empty()) {
+    const uint32_t samples = options.image_samples > 0 ? options.image_samples : 256;
+    BudgetSearch search = search_term_combinations(*study, samples);
+    if (!write_report(output, budget_report_of(search, budgets, output), err)) return 1;
+    out << budget_answers(search, budgets);
+    out << fmt::format("facet bench accuracy: {} combinations, costs from {} -> {}\n", search.combinations.size(),
+                       search.device.empty() ? std::string("SPIR-V instruction counts") : search.device, output);
+    return 0;
   }
   if (!write_report(output, report_of(*study, output), err)) return 1;
   out << fmt::format("facet bench accuracy: {} rows on {} -> {}\n", study->rows.size(),

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 
+#include "accuracy/pareto_chart.h"
 #include "facet/markup.h"
 #include "facet/runtime/accuracy.h"
 #include "facet/runtime/chart.h"
@@ -123,17 +124,19 @@ struct Header {
 };
 
 // Title, device, caveat, family colours and marker meaning.
-Header header(const Study& study, const std::vector<std::string>& families) {
+std::string default_subtitle(const Study& study) {
+  return fmt::format("Device: {}. Timed pass: {}x{} invocations, {} evaluations each, median of {} dispatches, "
+                     "minus a null pass.",
+                     study.device, study.options.width, study.options.height, study.options.evaluations,
+                     study.options.frames);
+}
+
+Header header(const Study& study, const std::vector<std::string>& families, const ChartTitles& titles) {
   Header h;
   double y = 22;
-  h.svg += text(12, y, 15, "Accuracy against cost: error of each approximation against GPU time per evaluation");
+  h.svg += text(12, y, 15, titles.title);
   y += 20;
-  h.svg += text(12, y, 11,
-                fmt::format("Device: {}. Timed pass: {}x{} invocations, {} evaluations each, median of {} dispatches, "
-                            "minus a null pass.",
-                            study.device, study.options.width, study.options.height, study.options.evaluations,
-                            study.options.frames),
-                "", kMuted);
+  h.svg += text(12, y, 11, titles.subtitle.empty() ? default_subtitle(study) : titles.subtitle, "", kMuted);
   if (timed_on_cpu(study)) {
     y += 18;
     const std::string name = study.device.find("llvmpipe") != std::string::npos ? "lavapipe" : study.device;
@@ -244,6 +247,12 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
 }  // namespace
 
 std::string study_chart_svg(const Study& study) {
+  return pareto_chart_svg(study, {.title = "Accuracy against cost: error of each approximation against GPU time per evaluation",
+                                  .subtitle = "",
+                                  .time_axis = "GPU time per evaluation, ps (minus the null pass; log scale, the same in every panel)"});
+}
+
+std::string pareto_chart_svg(const Study& study, const ChartTitles& titles) {
   std::vector<std::vector<const StudyRow*>> panel_rows(std::size(kPanels));
   std::vector<std::string> families;
   double lo = 1e300, hi = 0;
@@ -270,7 +279,7 @@ std::string study_chart_svg(const Study& study) {
     return rank(a) != rank(b) ? rank(a) < rank(b) : a < b;
   });
   const LogAxis x_axis = log_axis(lo, hi, kLeft, kWidth - kRight);
-  Header h = header(study, families);
+  Header h = header(study, families, titles);
   std::string body = h.svg;
   std::vector<std::string> legend;
   double y = h.height;
@@ -284,9 +293,7 @@ std::string study_chart_svg(const Study& study) {
     y += p.height;
   }
   y += 16;
-  body += text((kLeft + kWidth - kRight) / 2, y, 12,
-               "GPU time per evaluation, ps (minus the null pass; log scale, the same in every panel)",
-               R"(text-anchor="middle")");
+  body += text((kLeft + kWidth - kRight) / 2, y, 12, titles.time_axis, R"(text-anchor="middle")");
   for (const std::string& entry : legend) {
     y += 16;
     body += text(12, y, 11, entry, R"(class="legend")");

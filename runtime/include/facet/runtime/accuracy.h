@@ -91,6 +91,39 @@ std::vector<StudyRow> compute_errors();
 // get none.
 void compute_image_errors(std::vector<StudyRow>& rows, uint32_t samples);
 
+// ---- Choosing by budget (`--budget E`) ----
+// A combination of the stdlib's D, V, F and diffuse terms (row ids; "F_exact"
+// is the exact Fresnel, a dielectric blended with a conductor by metallic),
+// or one of Unity's Standard tiers, with its image error on the test scenes
+// against the exact model and its cost.
+struct TermCombination {
+  std::string name;               // "D_GGX + V_SchlickGGX + F_Schlick + Fd_Lambert", or "BRDF2_Unity_PBS"
+  std::vector<std::string> rows;  // the study rows whose costs add up to `cost`
+  double image_rmse = 0;          // the worst scene's RMSE
+  std::string worst_scene;
+  double cost = 0;                // in the search's cost_unit
+};
+struct BudgetSearch {
+  std::string device;     // where the costs were measured ("" without GPU times)
+  std::string device_type;
+  std::string cost_unit;  // "ps/eval" (the rows' GPU times) or "SPIR-V instr." (without them)
+  uint32_t samples = 0;   // per pixel of the Monte Carlo reference
+  std::vector<TermCombination> combinations;  // every combination, cheapest first
+  std::vector<TermCombination> unity_tiers;   // BRDF1..3, measured the same way
+};
+// Renders every combination and tier from the same samples; costs are the
+// sums of the study's per-row costs.
+BudgetSearch search_term_combinations(const Study& costs, uint32_t samples);
+// The cheapest combination whose image RMSE is at most `budget`, or nullptr.
+const TermCombination* cheapest_within(const BudgetSearch& search, double budget);
+// The answers as a markdown table (one row per budget), then Unity's tiers.
+std::string budget_answers(const BudgetSearch& search, const std::vector<double>& budgets);
+// The combinations' Pareto front and Unity's tiers on one chart (image
+// RMSE against cost, log-log), the answers marked; or a page with it.
+std::string budget_chart_svg(const BudgetSearch& search, const std::vector<double>& budgets);
+std::string budget_html(const BudgetSearch& search, const std::vector<double>& budgets);
+std::string budget_json(const BudgetSearch& search, const std::vector<double>& budgets);
+
 std::string study_json(const Study& study);
 // A study written by study_json (device_type may be missing: older files).
 Result<Study> study_from_json(const std::string& text);
@@ -105,8 +138,11 @@ std::string study_chart_svg(const Study& study);
 std::string study_html(const Study& study);
 
 // `facet bench accuracy [--device D] [--width W --height H] [-K N] [--frames N]
-//  [--no-gpu] [--validation] [--from study.json] --out report.html|report.json|chart.svg`;
-// --from redraws a study written before instead of measuring. Returns the exit code.
+//  [--no-gpu] [--validation] [--image-samples N] [--from study.json] [--budget E ...]
+//  --out report.html|report.json|chart.svg`;
+// --from redraws a study written before instead of measuring; --budget
+// answers for each budget E (the output is then the budget search). Returns
+// the exit code.
 int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace facet::runtime::accuracy
