@@ -8,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "accuracy/driver_statistics.h"
 #include "facet/markup.h"
 #include "facet/runtime/accuracy.h"
 
@@ -35,6 +36,7 @@ Result<StudyRow> row_from_json(const nlohmann::json& j) {
              .spirv_instructions = uint32_t(number(j, "spirv_instructions"))};
   if (j.contains("error_is_infinite") && j["error_is_infinite"].is_boolean() && j["error_is_infinite"].get<bool>()) r.error = std::numeric_limits<double>::infinity();
   if (j.contains("ns_per_eval") && j["ns_per_eval"].is_number()) r.ns_per_eval = j["ns_per_eval"].get<double>();
+  read_driver_fields(j, r);
   return r;
 }
 
@@ -69,6 +71,9 @@ Result<Study> study_from_json(const std::string& text) {
   }
   study.options.evaluations = uint32_t(number(j, "evaluations_per_invocation", study.options.evaluations));
   study.options.frames = uint32_t(number(j, "frames", study.options.frames));
+  if (j.contains("driver_statistics_offered") && j["driver_statistics_offered"].is_boolean()) {
+    study.driver_statistics_offered = j["driver_statistics_offered"].get<bool>();
+  }
   for (const nlohmann::json& r : j["rows"]) {
     Result<StudyRow> row = row_from_json(r);
     if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
@@ -88,6 +93,7 @@ std::string study_json(const Study& study) {
       j["error_is_infinite"] = true;
     }
     j["ns_per_eval"] = r.ns_per_eval ? nlohmann::ordered_json(*r.ns_per_eval) : nlohmann::ordered_json(nullptr);
+    write_driver_fields(r, j);
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
@@ -96,6 +102,7 @@ std::string study_json(const Study& study) {
                              {"evaluations_per_invocation", study.options.evaluations},
                              {"frames", study.options.frames},
                              {"rows", rows}};
+  if (study.driver_statistics_offered) out["driver_statistics_offered"] = *study.driver_statistics_offered;
   return out.dump(2) + "\n";
 }
 
@@ -109,15 +116,17 @@ std::string study_html(const Study& study) {
                       "minus a null pass.</p>\n",
                       xml_escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
+  html += driver_statistics_html(study);
   html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
+          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th>" +
+          driver_header_cells(study) + "</tr>\n";
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td>"
-                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
+                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>{}</tr>\n",
                         xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
                         r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), xml_escape(r.detail),
-                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
+                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), driver_row_cells(study, r));
   }
   return html + "</table>\n</body></html>\n";
 }
