@@ -1,3 +1,5 @@
+// The shared pieces of T14 (split_sum.h): the 18 points, the Monte Carlo
+// estimate c * E(v) over GGX visible normals, and the CPU twin's split sum.
 #include "stability/split_sum.h"
 
 #include <random>

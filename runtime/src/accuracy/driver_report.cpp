@@ -50,8 +50,9 @@ std::vector<std::string> statistic_names(const Study& study) {
   return names;
 }
 
-// The raw statistics, one row per study row, folded away under a summary.
-std::string raw_statistics_table(const Study& study) {
+}  // namespace
+
+std::string driver_raw_statistics_html(const Study& study) {
   std::vector<std::string> names = statistic_names(study);
   if (names.empty()) return "";
   std::string html = "<details><summary>Driver statistics as the driver reports them (not minus the null kernel)"
@@ -70,8 +71,6 @@ std::string raw_statistics_table(const Study& study) {
   }
   return html + "</table></details>\n";
 }
-
-}  // namespace
 
 void write_driver_fields(const StudyRow& row, nlohmann::ordered_json& j) {
   for (const DriverColumn& c : kColumns) {
@@ -134,8 +133,8 @@ std::string driver_statistics_html(const Study& study) {
       quoted_names(code_size_statistic_names()));
   bool any_column = false;
   for (const DriverColumn& c : kColumns) any_column = any_column || column_has_data(study, c);
-  if (!any_column) html += " The driver reports none of these names; what it reports is listed below.";
-  return html + "</p>\n" + raw_statistics_table(study);
+  if (!any_column) html += " The driver reports none of these names; what it reports is listed under the table.";
+  return html + "</p>\n";
 }
 
 }  // namespace facet::runtime::accuracy

@@ -16,13 +16,8 @@ namespace {
 // The executables of the kernel of one row.
 Result<std::vector<PipelineExecutable>> kernel_statistics(const Context& context, const std::string& includes,
                                                           const std::string& hlsl, Diagnostics& diags) {
-  backend::BackendOptions options;
-  options.target = backend::TargetEnv::vulkan1_1;
-  auto spirv = backend::compile_hlsl_compute(single_kernel(includes, hlsl), "main", options, diags);
-  FACET_TRY(spirv);
-  VkResultOf<ComputePipeline> pipeline =
-      create_compute_pipeline(context, *spirv, {.entry = "main", .storage_buffers = 2, .capture_statistics = true});
-  if (!pipeline) return failure(describe(pipeline.error()));
+  Result<ComputePipeline> pipeline = kernel_pipeline(context, includes, hlsl, true, diags);
+  FACET_TRY(pipeline);
   VkResultOf<std::vector<PipelineExecutable>> executables = pipeline_statistics(context, pipeline->handle());
   if (!executables) return failure(describe(executables.error()));
   return std::move(*executables);
@@ -48,6 +43,18 @@ void fill_row(StudyRow& row, const std::vector<PipelineExecutable>& executables,
 }
 
 }  // namespace
+
+Result<ComputePipeline> kernel_pipeline(const Context& context, const std::string& includes, const std::string& hlsl,
+                                        bool capture, Diagnostics& diags) {
+  backend::BackendOptions options;
+  options.target = backend::TargetEnv::vulkan1_1;
+  auto spirv = backend::compile_hlsl_compute(single_kernel(includes, hlsl), "main", options, diags);
+  FACET_TRY(spirv);
+  VkResultOf<ComputePipeline> pipeline =
+      create_compute_pipeline(context, *spirv, {.entry = "main", .storage_buffers = 2, .capture_statistics = capture});
+  if (!pipeline) return failure(describe(pipeline.error()));
+  return std::move(*pipeline);
+}
 
 Result<void> measure_driver_statistics(const Context& context, const std::vector<RowSpec>& specs, Study& study,
                                        Diagnostics& diags) {

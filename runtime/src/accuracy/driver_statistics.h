@@ -12,16 +12,19 @@
 #include "facet/diagnostics.h"
 #include "facet/result.h"
 #include "facet/runtime/accuracy.h"
-
-namespace facet::runtime {
-class Context;
-}
+#include "facet/runtime/compute.h"
 
 namespace facet::runtime::accuracy {
 
 // The one-evaluation compute kernel of a row (inputs from a buffer, the value
 // to a buffer) whose SPIR-V instructions the study counts (study.cpp).
 std::string single_kernel(const std::string& includes, const std::string& hlsl);
+
+// A row's single_kernel as a compute pipeline (two storage buffers, entry
+// "main"), created with VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR when
+// `capture` (which needs context.pipeline_statistics()).
+Result<ComputePipeline> kernel_pipeline(const Context& context, const std::string& includes, const std::string& hlsl,
+                                        bool capture, Diagnostics& diags);
 
 // Records whether `context` has pipeline statistics on and, where it has,
 // fills every row's driver_* fields from its single_kernel, created with
@@ -40,7 +43,10 @@ void read_driver_fields(const nlohmann::json& j, StudyRow& row);
 std::string driver_header_cells(const Study& study);
 std::string driver_row_cells(const Study& study, const StudyRow& row);
 // What the page says about driver statistics: which names were read, or that
-// the device does not offer them; with the raw statistics of every row.
+// the device does not offer them.
 std::string driver_statistics_html(const Study& study);
+// The raw statistics of every row, folded away under a summary; "" when no
+// row has any.
+std::string driver_raw_statistics_html(const Study& study);
 
 }  // namespace facet::runtime::accuracy

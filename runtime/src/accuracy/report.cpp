@@ -128,7 +128,7 @@ std::string study_html(const Study& study) {
                         r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), xml_escape(r.detail),
                         xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), driver_row_cells(study, r));
   }
-  return html + "</table>\n</body></html>\n";
+  return html + "</table>\n" + driver_raw_statistics_html(study) + "</body></html>\n";
 }
 
 }  // namespace facet::runtime::accuracy

@@ -10,7 +10,9 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "accuracy/driver_statistics.h"
 #include "facet/runtime/accuracy.h"
+#include "facet/runtime/vulkan_context.h"
 #include "unit/runtime/context_fixture.h"  // keeps lavapipe mapped for LeakSanitizer
 
 namespace facet::runtime::accuracy {
@@ -72,6 +74,27 @@ TEST(AccuracyDriverStatisticsTest, OnLavapipeTheStudyRunsAndMarksThemUnavailable
   nlohmann::json j = nlohmann::json::parse(study_json(*study));
   EXPECT_EQ(j["driver_statistics_offered"], false);
   EXPECT_FALSE(j["rows"][0].contains("driver_registers"));
+}
+
+// The kernels whose statistics a driver reports are the study's own: on
+// lavapipe (without the capture flag, which it cannot take) every row's and
+// the null model's make a pipeline that the validation layer accepts.
+TEST(AccuracyDriverStatisticsTest, EveryRowsKernelIsAValidPipeline) {
+  (void)test_support::kLavapipePinned;
+  VkResultOf<std::unique_ptr<Context>> context = create_context({.validation = true, .pipeline_statistics = true});
+  ASSERT_TRUE(context) << describe(context.error());
+  Diagnostics diags;
+  Result<ComputePipeline> null_model = kernel_pipeline(**context, "", kNullModel, false, diags);
+  EXPECT_TRUE(null_model) << (diags.size() ? diags.all()[0].message : null_model.error().reason);
+  for (const RowSpec& spec : catalogue()) {
+    Result<ComputePipeline> pipeline = kernel_pipeline(**context, spec.includes, spec.hlsl, false, diags);
+    EXPECT_TRUE(pipeline) << spec.row.id << ": " << (pipeline ? "" : pipeline.error().reason);
+  }
+  // Capturing needs the extension, which lavapipe lacks: a clear error.
+  Result<ComputePipeline> capture = kernel_pipeline(**context, "", kNullModel, true, diags);
+  ASSERT_FALSE(capture);
+  EXPECT_NE(capture.error().reason.find("VK_KHR_pipeline_executable_properties"), std::string::npos);
+  EXPECT_TRUE((*context)->messages().empty()) << (*context)->messages_text();
 }
 
 TEST(AccuracyDriverStatisticsTest, WithoutTheGpuNothingIsRecorded) {
