@@ -56,8 +56,9 @@ std::vector<DriverStatistic> decode_statistics(std::span<const VkPipelineExecuta
 // trimming, whole names only ("Spilled VGPRs" is not "VGPRs"). The first
 // name in a list that an executable has wins.
 //   instructions: "Instructions" (RADV, recent ANV), "Instruction Count" (older ANV)
-//   registers:    "Register Count", "Registers" (NVIDIA), "VGPRs" (RADV), "numUsedVgprs" (AMDVLK),
-//                 "GRF registers" (ANV): per-thread (vector) registers
+//   registers:    "Register Count" (NVIDIA), "Registers" (a spelling no driver above uses, kept
+//                 for others), "VGPRs" (RADV), "numUsedVgprs" (AMDVLK), "GRF registers" (ANV):
+//                 per-thread (vector) registers
 //   code bytes:   "Binary Size" (NVIDIA), "Code size" (RADV, ANV)
 std::span<const std::string_view> instruction_statistic_names();
 std::span<const std::string_view> register_statistic_names();
