@@ -48,7 +48,7 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
   CLI::App app{"The accuracy-versus-cost study of facet's lighting library", "facet bench accuracy"};
   StudyOptions options;
   std::string output, from;
-  bool no_gpu = false;
+  bool no_gpu = false, no_driver_statistics = false;
   std::vector<double> budgets;
   app.add_option("--out,-o", output, "report.html, report.json or chart.svg (the Pareto chart alone)")->required();
   app.add_option("--from", from, "redraw a study that --out report.json wrote, instead of measuring");
@@ -66,6 +66,8 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
       ->check(CLI::PositiveNumber);
   app.add_flag("--no-gpu", no_gpu, "errors and instruction counts only");
   app.add_flag("--validation", options.validation, "Vulkan validation layers on");
+  app.add_flag("--no-driver-statistics", no_driver_statistics,
+               "leave out the driver's statistics (VK_KHR_pipeline_executable_properties)");
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
     app.parse(reversed);
@@ -78,6 +80,7 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
     return 2;
   }
   options.gpu = !no_gpu;
+  options.driver_statistics = !no_driver_statistics;
   if (!output.ends_with(".json") && !output.ends_with(".html") && !output.ends_with(".svg")) {
     err << fmt::format("facet bench accuracy: --out '{}' must end in .html, .json or .svg\n", output);
     return 2;

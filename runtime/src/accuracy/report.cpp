@@ -8,6 +8,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "accuracy/driver_statistics.h"
 #include "facet/markup.h"
 #include "facet/runtime/accuracy.h"
 
@@ -79,6 +80,7 @@ Result<StudyRow> row_from_json(const nlohmann::json& j) {
   if (j.contains("ns_per_eval") && j["ns_per_eval"].is_number()) r.ns_per_eval = j["ns_per_eval"].get<double>();
   r.image = image_from_json(j);
   r.image_how = string_of(j, "image_how");
+  read_driver_fields(j, r);
   return r;
 }
 
@@ -114,6 +116,9 @@ Result<Study> study_from_json(const std::string& text) {
   study.options.evaluations = uint32_t(number(j, "evaluations_per_invocation", study.options.evaluations));
   study.options.frames = uint32_t(number(j, "frames", study.options.frames));
   study.options.image_samples = uint32_t(number(j, "image_samples", 0));
+  if (j.contains("driver_statistics_offered") && j["driver_statistics_offered"].is_boolean()) {
+    study.driver_statistics_offered = j["driver_statistics_offered"].get<bool>();
+  }
   for (const nlohmann::json& r : j["rows"]) {
     Result<StudyRow> row = row_from_json(r);
     if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
@@ -137,6 +142,7 @@ std::string study_json(const Study& study) {
       j["image"] = image_json(r);
       j["image_how"] = r.image_how;
     }
+    write_driver_fields(r, j);
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
@@ -146,6 +152,7 @@ std::string study_json(const Study& study) {
                              {"frames", study.options.frames},
                              {"image_samples", study.options.image_samples},
                              {"rows", rows}};
+  if (study.driver_statistics_offered) out["driver_statistics_offered"] = *study.driver_statistics_offered;
   return out.dump(2) + "\n";
 }
 
@@ -164,19 +171,21 @@ std::string study_html(const Study& study) {
                         "RMSE and largest error of the worst scene, in linear radiance (white furnace = 1).</p>\n",
                         study.options.image_samples);
   }
+  html += driver_statistics_html(study);
   html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>image RMSE</th><th>image max</th><th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
+          "<th>image RMSE</th><th>image max</th><th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th>" +
+          driver_header_cells(study) + "</tr>\n";
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td>"
                         "<td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>"
-                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
+                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>{}</tr>\n",
                         xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
                         r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"),
                         image_cell(r, &ImageError::rmse), image_cell(r, &ImageError::max_error), xml_escape(r.detail),
-                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
+                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), driver_row_cells(study, r));
   }
-  return html + "</table>\n</body></html>\n";
+  return html + "</table>\n" + driver_raw_statistics_html(study) + "</body></html>\n";
 }
 
 }  // namespace facet::runtime::accuracy

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "accuracy/catalogue.h"
+#include "accuracy/driver_statistics.h"
 #include "facet/backend.h"
 #include "facet/runtime/evaluator.h"
 #include "facet/runtime/vulkan_context.h"
@@ -20,8 +21,10 @@ std::string load_inputs() {
   return out;
 }
 
+}  // namespace
+
 // One evaluation, inputs from a buffer, the value to a buffer: what the
-// instruction count measures.
+// instruction count measures (and the driver statistics, driver_statistics.cpp).
 std::string single_kernel(const std::string& includes, const std::string& hlsl) {
   return includes + "StructuredBuffer<float> facet_in : register(t0);\n"
                     "RWStructuredBuffer<float> facet_out : register(u1);\n"
@@ -29,6 +32,8 @@ std::string single_kernel(const std::string& includes, const std::string& hlsl) 
                     "  uint base = id.x * " + std::to_string(kInputs) + ";\n" + load_inputs() +
          "  float value = 0;\n  {\n" + hlsl + "\n  }\n  facet_out[id.x] = value;\n}\n";
 }
+
+namespace {
 
 // Instructions inside function bodies (OpFunction .. OpFunctionEnd).
 uint32_t body_instructions(const std::vector<uint32_t>& spirv) {
@@ -88,13 +93,15 @@ Result<double> median_gpu_ns(const Context& context, const FunctionEvaluator& ev
 
 Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>& specs, Study& study,
                          Diagnostics& diags) {
-  auto context = create_context({.device = options.device, .validation = options.validation});
+  auto context = create_context(
+      {.device = options.device, .validation = options.validation, .pipeline_statistics = options.driver_statistics});
   if (!context) {
     diags.add(DiagId::driver_bad_option, {}, "no Vulkan device for the accuracy study: " + describe(context.error()));
     return failure("no device");
   }
   study.device = (*context)->device_info().name;
   study.device_type = std::string(device_type_name((*context)->device_info().type));
+  if (options.driver_statistics) FACET_TRY(measure_driver_statistics(**context, specs, study, diags));
   std::vector<EvalFunction> functions{timed_function("", kNullModel, options.evaluations)};
   for (const RowSpec& s : specs) functions.push_back(timed_function(s.includes, s.hlsl, options.evaluations));
   auto evaluator = compile_evaluator(**context, functions, {}, diags);

@@ -41,7 +41,9 @@ struct ContextBuilder {
     return {};
   }
 
-  static VkResultOf<void> create_device(Context& context) {
+  // pipeline_statistics: VK_KHR_pipeline_executable_properties and its
+  // feature, where the device offers them.
+  static VkResultOf<void> create_device(Context& context, bool pipeline_statistics) {
     context.queue_family_ = compute_queue_family(context.physical_).value_or(0);  // select_device checked it
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -51,6 +53,16 @@ struct ContextBuilder {
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable_info{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    const char* extension = VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME;
+    context.pipeline_statistics_ = pipeline_statistics && context.info_.pipeline_executable_info;
+    if (context.pipeline_statistics_) {
+      executable_info.pipelineExecutableInfo = VK_TRUE;
+      info.pNext = &executable_info;
+      info.enabledExtensionCount = 1;
+      info.ppEnabledExtensionNames = &extension;
+    }
     if (VkResult result = vkCreateDevice(context.physical_, &info, nullptr, &context.device_); result != VK_SUCCESS) {
       return vk_failure(VkErrorCode::device_failed, fmt::format("cannot create a device on {}", context.info_.name),
                         result);
@@ -88,7 +100,7 @@ VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& option
   context->instance_ = *instance;
   if (options.validation) FACET_TRY(ContextBuilder::create_messenger(*context, messenger));
   FACET_TRY(ContextBuilder::pick_device(*context, options.device));
-  FACET_TRY(ContextBuilder::create_device(*context));
+  FACET_TRY(ContextBuilder::create_device(*context, options.pipeline_statistics));
   FACET_TRY(ContextBuilder::create_pools(*context));
   return context;
 }

@@ -39,6 +39,28 @@ std::vector<VkQueueFamilyProperties> queue_families(VkPhysicalDevice device) {
   return families;
 }
 
+bool offers_extension(VkPhysicalDevice device, const char* name) {
+  uint32_t count = 0;
+  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> extensions(count);
+  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()) != VK_SUCCESS) return false;
+  return std::any_of(extensions.begin(), extensions.begin() + count,
+                     [&](const VkExtensionProperties& e) { return std::string_view(e.extensionName) == name; });
+}
+
+// The extension and its one feature (vkGetPhysicalDeviceFeatures2 is core
+// from Vulkan 1.1; older devices are rejected by select_device anyway).
+bool offers_pipeline_executable_info(VkPhysicalDevice device, uint32_t api_version) {
+  if (api_version < VK_API_VERSION_1_1) return false;
+  if (!offers_extension(device, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) return false;
+  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR feature{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &feature;
+  vkGetPhysicalDeviceFeatures2(device, &features);
+  return feature.pipelineExecutableInfo == VK_TRUE;
+}
+
 std::string rejection(const DeviceInfo& device, const std::string& why) {
   return fmt::format("{}: rejected, {}", describe(device), why);
 }
@@ -116,6 +138,7 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
     info.has_compute_queue = true;
     info.timestamp_valid_bits = queue_families(device)[*family].timestampValidBits;
   }
+  info.pipeline_executable_info = offers_pipeline_executable_info(device, info.api_version);
   return info;
 }
 

@@ -29,6 +29,10 @@ VkResultOf<void> check_layout(const std::vector<uint32_t>& spirv, const ComputeL
 VkResultOf<ComputePipeline> create_compute_pipeline(const Context& context, const std::vector<uint32_t>& spirv,
                                                     const ComputeLayout& layout) {
   FACET_TRY(check_layout(spirv, layout));
+  if (layout.capture_statistics && !context.pipeline_statistics()) {
+    return vk_failure(VkErrorCode::invalid_argument, "capture_statistics needs a context with pipeline statistics on "
+                                                     "(VK_KHR_pipeline_executable_properties)");
+  }
   ComputePipeline p;
   p.device_ = context.device();
   p.interface_ = layout;
@@ -66,6 +70,7 @@ VkResultOf<ComputePipeline> create_compute_pipeline(const Context& context, cons
   info.stage.module = p.module_;
   info.stage.pName = p.interface_.entry.c_str();
   info.layout = p.layout_;
+  if (layout.capture_statistics) info.flags |= VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR;
   if (VkResult r = vkCreateComputePipelines(p.device_, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
       r != VK_SUCCESS) {
     p.pipeline_ = VK_NULL_HANDLE;

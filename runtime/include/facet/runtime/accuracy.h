@@ -10,6 +10,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "facet/diagnostics.h"
@@ -41,6 +42,15 @@ struct StudyRow {
   std::optional<double> ns_per_eval;  // GPU time per evaluation, minus the null pass
   std::vector<ImageError> image;      // per test scene; empty for reference rows
   std::string image_how;              // how the row enters the scenes, in words
+
+  // Driver statistics (VK_KHR_pipeline_executable_properties) of the same
+  // one-evaluation kernel the SPIR-V count reads; empty where the device does
+  // not report them (Study::driver_statistics_offered) or does not name the cost
+  // (facet/runtime/pipeline_statistics.h lists the names read).
+  std::optional<uint32_t> driver_instructions;  // minus the null kernel's
+  std::optional<uint32_t> driver_registers;     // the kernel's own: a register count does not subtract
+  std::optional<uint32_t> driver_code_bytes;    // minus the null kernel's
+  std::vector<std::pair<std::string, double>> driver_statistics;  // every statistic as the driver names it, raw
 };
 
 struct StudyOptions {
@@ -51,6 +61,7 @@ struct StudyOptions {
   uint32_t frames = 11;          // timed dispatches; the median is reported
   bool gpu = true;               // false: CPU errors and static cost only
   uint32_t image_samples = 256;  // per pixel of the Monte Carlo reference; 0: no image errors
+  bool driver_statistics = true;  // read them where the device offers VK_KHR_pipeline_executable_properties
 };
 
 // The row's worst scene by RMSE, or nullptr without image errors.
@@ -61,6 +72,9 @@ struct Study {
   std::string device_type;  // "cpu", "discrete-gpu", ... (device_type_name); "" when not recorded
   StudyOptions options;
   std::vector<StudyRow> rows;
+  // Whether the device offered VK_KHR_pipeline_executable_properties (the rows'
+  // driver_* fields); nullopt when not recorded (no GPU, or an older study).
+  std::optional<bool> driver_statistics_offered;
 };
 
 // True when the times come from a CPU implementation of Vulkan (lavapipe,
@@ -138,8 +152,8 @@ std::string study_chart_svg(const Study& study);
 std::string study_html(const Study& study);
 
 // `facet bench accuracy [--device D] [--width W --height H] [-K N] [--frames N]
-//  [--no-gpu] [--validation] [--image-samples N] [--from study.json] [--budget E ...]
-//  --out report.html|report.json|chart.svg`;
+//  [--no-gpu] [--no-driver-statistics] [--validation] [--image-samples N] [--from study.json]
+//  [--budget E ...] --out report.html|report.json|chart.svg`;
 // --from redraws a study written before instead of measuring; --budget
 // answers for each budget E (the output is then the budget search). Returns
 // the exit code.

@@ -27,6 +27,10 @@ struct ComputeLayout {
   std::string entry = "main";       // the SPIR-V entry point name
   uint32_t storage_buffers = 0;     // set 0, bindings 0..storage_buffers-1
   uint32_t push_constant_bytes = 0; // 0: none; else a multiple of 4, at most 128
+  // VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR, so that pipeline_statistics()
+  // (facet/runtime/pipeline_statistics.h) can read the driver's statistics;
+  // needs a context with pipeline_statistics() on.
+  bool capture_statistics = false;
 };
 
 // Move-only owner of the shader module, layouts, pipeline and its one

@@ -30,6 +30,10 @@ struct DeviceInfo {
   float timestamp_period_ns = 0;    // nanoseconds per timestamp tick
   bool has_compute_queue = false;
   uint32_t timestamp_valid_bits = 0;  // of the first compute queue family; 0: no timestamps
+  // VK_KHR_pipeline_executable_properties with its pipelineExecutableInfo
+  // feature: the driver reports statistics of compiled pipelines
+  // (facet/runtime/pipeline_statistics.h). lavapipe does not.
+  bool pipeline_executable_info = false;
 };
 
 // "cpu", "discrete-gpu", ...
@@ -50,6 +54,10 @@ VkResultOf<std::vector<DeviceInfo>> list_devices();
 struct ContextOptions {
   std::string device;       // a selector for select_device
   bool validation = false;  // VK_LAYER_KHRONOS_validation + message recording
+  // Enable VK_KHR_pipeline_executable_properties where the device offers it
+  // (DeviceInfo::pipeline_executable_info); Context::pipeline_statistics()
+  // says whether it is on. A device without it is no error.
+  bool pipeline_statistics = false;
 };
 
 // What the validation messenger recorded (severity warning or error).
@@ -76,6 +84,9 @@ class Context {
   VkQueryPool timestamp_pool() const { return timestamp_pool_; }  // 2 queries; null without timestamps
   const DeviceInfo& device_info() const { return info_; }
   bool validation() const { return validation_; }
+  // True when the device was created with VK_KHR_pipeline_executable_properties
+  // and pipelineExecutableInfo on (ContextOptions::pipeline_statistics).
+  bool pipeline_statistics() const { return pipeline_statistics_; }
 
   // Every message of severity >= warning since creation (or the last clear).
   const std::vector<ValidationMessage>& messages() const { return messages_; }
@@ -101,6 +112,7 @@ class Context {
   VkQueryPool timestamp_pool_ = VK_NULL_HANDLE;
   DeviceInfo info_;
   bool validation_ = false;
+  bool pipeline_statistics_ = false;
   std::vector<ValidationMessage> messages_;
 };
 
