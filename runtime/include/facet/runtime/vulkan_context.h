@@ -2,7 +2,7 @@
 // device chosen by a selector, a device with one compute-capable queue, a
 // command pool and a timestamp query pool. Validation layers on request, with
 // a debug-utils messenger that records every warning and error so that tests
-// can assert there were none.
+// can assert there were none. shaderFloat16 is enabled where the device has it.
 //
 //   auto context = runtime::create_context({.validation = true});   // lavapipe
 //   if (!context) { fmt::print("{}\n", runtime::describe(context.error())); return 1; }
@@ -76,6 +76,10 @@ class Context {
   VkQueryPool timestamp_pool() const { return timestamp_pool_; }  // 2 queries; null without timestamps
   const DeviceInfo& device_info() const { return info_; }
   bool validation() const { return validation_; }
+  // Whether the device has, and the context enabled, shaderFloat16: 16-bit
+  // float arithmetic in shaders (kernels compiled with
+  // backend::BackendOptions::hlsl_16bit_types). Off: such kernels must not run.
+  bool shader_float16() const { return shader_float16_; }
 
   // Every message of severity >= warning since creation (or the last clear).
   const std::vector<ValidationMessage>& messages() const { return messages_; }
@@ -101,6 +105,7 @@ class Context {
   VkQueryPool timestamp_pool_ = VK_NULL_HANDLE;
   DeviceInfo info_;
   bool validation_ = false;
+  bool shader_float16_ = false;
   std::vector<ValidationMessage> messages_;
 };
 
