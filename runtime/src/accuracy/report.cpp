@@ -27,6 +27,43 @@ std::string string_of(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
+// ---- the fp16 columns (StudyRow::fp16_*): absent from a row without them ----
+void fp16_to_json(const StudyRow& r, nlohmann::ordered_json& j) {
+  if (r.fp16_error) {
+    bool finite = std::isfinite(*r.fp16_error);
+    j["fp16_error"] = finite ? nlohmann::ordered_json(*r.fp16_error) : nlohmann::ordered_json(nullptr);
+    if (!finite) j["fp16_error_is_infinite"] = true;
+  }
+  if (r.fp16_ns_per_eval) j["fp16_ns_per_eval"] = *r.fp16_ns_per_eval;
+  if (!r.fp16_domain.empty()) j["fp16_domain"] = r.fp16_domain;
+}
+void fp16_from_json(const nlohmann::json& j, StudyRow& r) {
+  if (j.contains("fp16_error") && j["fp16_error"].is_number()) r.fp16_error = j["fp16_error"].get<double>();
+  if (j.contains("fp16_error_is_infinite") && j["fp16_error_is_infinite"].is_boolean() &&
+      j["fp16_error_is_infinite"].get<bool>()) {
+    r.fp16_error = std::numeric_limits<double>::infinity();
+  }
+  if (j.contains("fp16_ns_per_eval") && j["fp16_ns_per_eval"].is_number()) r.fp16_ns_per_eval = j["fp16_ns_per_eval"].get<double>();
+  r.fp16_domain = string_of(j, "fp16_domain");
+}
+std::string fp16_error_cell(const std::optional<double>& e) {
+  if (!e) return "-";
+  return std::isfinite(*e) ? fmt::format("{:.3g}", *e) : std::string("inf (overflow)");
+}
+// The two table cells, the domain as the error cell's tooltip.
+std::string fp16_html_cells(const StudyRow& r) {
+  return fmt::format("<td class=\"n\" title=\"{}\">{}</td><td class=\"n\">{}</td>", xml_escape(r.fp16_domain),
+                     fp16_error_cell(r.fp16_error), cell(r.fp16_ns_per_eval, "{:.3g}"));
+}
+std::string fp16_html_note(const Study& study) {
+  if (!study.shader_float16) return "";
+  return *study.shader_float16
+             ? "<p>fp16 columns: the row's HLSL and the stdlib with half for float, run with shaderFloat16 (real 16-bit "
+               "arithmetic); error: max relative error against the fp64 twin over the domain in the cell's tooltip.</p>\n"
+             : "<p>fp16 columns: not measured, the device has no shaderFloat16.</p>\n";
+}
+// ---- end of the fp16 columns ----
+
 Result<StudyRow> row_from_json(const nlohmann::json& j) {
   if (!j.is_object() || !j.contains("id") || !j["id"].is_string()) return failure("a row without an 'id'");
   StudyRow r{.id = string_of(j, "id"), .group = string_of(j, "group"), .name = string_of(j, "name"),
@@ -35,6 +72,7 @@ Result<StudyRow> row_from_json(const nlohmann::json& j) {
              .spirv_instructions = uint32_t(number(j, "spirv_instructions"))};
   if (j.contains("error_is_infinite") && j["error_is_infinite"].is_boolean() && j["error_is_infinite"].get<bool>()) r.error = std::numeric_limits<double>::infinity();
   if (j.contains("ns_per_eval") && j["ns_per_eval"].is_number()) r.ns_per_eval = j["ns_per_eval"].get<double>();
+  fp16_from_json(j, r);
   return r;
 }
 
@@ -69,6 +107,7 @@ Result<Study> study_from_json(const std::string& text) {
   }
   study.options.evaluations = uint32_t(number(j, "evaluations_per_invocation", study.options.evaluations));
   study.options.frames = uint32_t(number(j, "frames", study.options.frames));
+  if (j.contains("shader_float16") && j["shader_float16"].is_boolean()) study.shader_float16 = j["shader_float16"].get<bool>();
   for (const nlohmann::json& r : j["rows"]) {
     Result<StudyRow> row = row_from_json(r);
     if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
@@ -88,14 +127,16 @@ std::string study_json(const Study& study) {
       j["error_is_infinite"] = true;
     }
     j["ns_per_eval"] = r.ns_per_eval ? nlohmann::ordered_json(*r.ns_per_eval) : nlohmann::ordered_json(nullptr);
+    fp16_to_json(r, j);
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
                              {"device_type", study.device_type},
                              {"grid", {study.options.width, study.options.height}},
                              {"evaluations_per_invocation", study.options.evaluations},
-                             {"frames", study.options.frames},
-                             {"rows", rows}};
+                             {"frames", study.options.frames}};
+  if (study.shader_float16) out["shader_float16"] = *study.shader_float16;
+  out["rows"] = rows;
   return out.dump(2) + "\n";
 }
 
@@ -109,15 +150,17 @@ std::string study_html(const Study& study) {
                       "minus a null pass.</p>\n",
                       xml_escape(study.device.empty() ? std::string("none (no GPU timing)") : study.device),
                       study.options.width, study.options.height, study.options.evaluations, study.options.frames);
+  html += fp16_html_note(study);
   html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th></tr>\n";
+          "<th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th>"
+          "<th>fp16 GPU error</th><th>fp16 ns/eval</th></tr>\n";
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td>"
-                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
+                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>{}</tr>\n",
                         xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
                         r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"), xml_escape(r.detail),
-                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"));
+                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), fp16_html_cells(r));
   }
   return html + "</table>\n</body></html>\n";
 }

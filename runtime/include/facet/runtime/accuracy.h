@@ -28,6 +28,14 @@ struct StudyRow {
   std::string anchor;     // the measured anchor (docs/accuracy.md, "Agreement with the measured anchors"), "" when none
   uint32_t spirv_instructions = 0;    // one evaluation, after spirv-opt, minus the null kernel
   std::optional<double> ns_per_eval;  // GPU time per evaluation, minus the null pass
+
+  // Real 16-bit arithmetic on the GPU (docs/accuracy.md, "The fp16 columns"):
+  // the row's HLSL and the stdlib with half for float, on a device with
+  // shaderFloat16. Empty for rows not evaluated in half, without GPU timing,
+  // and on devices without shaderFloat16.
+  std::optional<double> fp16_error;        // max relative error against the fp64 twin over fp16_domain; inf: overflow
+  std::optional<double> fp16_ns_per_eval;  // as ns_per_eval: the half kernel minus the half null pass
+  std::string fp16_domain;                 // the inputs fp16_error is taken over, in words
 };
 
 struct StudyOptions {
@@ -44,6 +52,9 @@ struct Study {
   std::string device_type;  // "cpu", "discrete-gpu", ... (device_type_name); "" when not recorded
   StudyOptions options;
   std::vector<StudyRow> rows;
+  // Whether the device ran the fp16 columns' 16-bit kernels (shaderFloat16);
+  // nullopt when not recorded (no GPU, or a study written before them).
+  std::optional<bool> shader_float16;
 };
 
 // True when the times come from a CPU implementation of Vulkan (lavapipe,
