@@ -1,12 +1,14 @@
 // The fp16 mode (T3/T4, docs/stability.md "fp16"): the GGX D, V and F forms in true
 // half arithmetic, on the CPU (GCC _Float16, facet/reference/fp16/) and on the
-// GPU (an emulation that rounds every operation to half with f32tof16, since
-// the runtime context enables no 16-bit arithmetic), plus the stdlib compiled
-// with min16float (RelaxedPrecision), which lavapipe evaluates at fp32.
+// GPU: an emulation that rounds every operation to half with f32tof16, and the
+// stdlib's own functions in real 16-bit arithmetic (float16_t, shaderFloat16);
+// plus the stdlib compiled with min16float without 16-bit types
+// (RelaxedPrecision), which lavapipe evaluates at fp32.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "facet/backend.h"
 #include "facet/reference/brdf.h"
@@ -194,6 +196,66 @@ TEST_F(StabilityFp16GpuTest, EmulatedHalfOnTheGpuReproducesTheCpuHalfOutcome) {
               count, gpu_inf_naive, gpu_inf_safe, mismatches);
   EXPECT_EQ(mismatches, 0);
   EXPECT_GT(gpu_inf_naive, 0);
+}
+
+// Real half on the GPU: the stdlib's own FacetD_GGX and FacetD_GGX_FP16Safe
+// rewritten for half (backend::to_half_precision, through
+// half_precision_stdlib) and compiled with 16-bit types, run with
+// shaderFloat16: float16_t arithmetic, not an emulation. The same points as
+// the emulation above; the same bounds as the _Float16 tests.
+runtime::EvaluatorOptions real_half_options() {
+  runtime::EvaluatorOptions options;
+  options.backend.stdlib_dir = backend::default_stdlib_dir();
+  options.backend.hlsl_16bit_types = true;
+  options.backend.resolver = backend::half_precision_stdlib(options.backend.stdlib_dir);
+  return options;
+}
+const char* kRealHalfIncludes = "#include \"FacetHalf.hlsl\"\n#include \"FacetBRDF.hlsl\"\n";
+
+TEST_F(StabilityFp16GpuTest, OnRealHalfTheNaiveGgxOverflowsAtSmallAlphaAndTheSafeFormStaysWithinItsBound) {
+  if (!context().shader_float16()) GTEST_SKIP() << context().device_info().name << " has no shaderFloat16";
+  auto evaluator = compile_functions(
+      context(),
+      {{.includes = kRealHalfIncludes,
+        .hlsl = "half s = (half)x[0], c = (half)x[1], a = (half)x[2];\n"
+                "r.x = (float)FacetD_GGX(c, a);\n"
+                "r.y = (float)FacetD_GGX_FP16Safe(half3(0.0h, 0.0h, 1.0h), half3(s, 0.0h, c), a);",
+        .input_count = 3, .output_count = 2}},
+      real_half_options());
+  ASSERT_NE(evaluator, nullptr);
+  const double alphas[] = {reference::FACET_MIN_ALPHA, reference::FACET_MIN_ALPHA_FP16, 0.02, 0.0625, 0.25};
+  constexpr int kSteps = 512;
+  std::vector<float> points;
+  for (double alpha : alphas)
+    for (int i = 0; i < kSteps; ++i) {
+      double t = (kPi / 6.0) * i / (kSteps - 1);
+      points.insert(points.end(), {float(std::sin(t)), float(std::cos(t)), float(alpha)});
+    }
+  std::vector<float> gpu = run_function(context(), *evaluator, 0, points, uint32_t(points.size() / 3));
+  ASSERT_EQ(gpu.size(), points.size() / 3 * 2);
+  for (size_t k = 0; k < std::size(alphas); ++k) {
+    const double alpha = alphas[k], peak = 1.0 / (kPi * alpha * alpha);
+    DError naive_error, safe_error;
+    for (int i = 0; i < kSteps; ++i) {
+      size_t p = k * kSteps + i;
+      double ref = D_ref(double(points[p * 3 + 1]), double(points[p * 3 + 2]));
+      if (ref < 1e-3 * peak) continue;
+      double clamped = std::min(ref, 453.5 * 453.5 / kPi);
+      for (auto [value, reference, e] : {std::tuple{gpu[p * 2], ref, &naive_error}, std::tuple{gpu[p * 2 + 1], clamped, &safe_error}}) {
+        if (!std::isfinite(value)) ++e->infinite;
+        else e->worst = std::max(e->worst, std::abs(value / reference - 1.0));
+      }
+    }
+    std::printf("[ fp16 real ] %s alpha %.6f: naive D max rel err %.4g (%d inf), safe D %.4g (%d inf)\n",
+                context().device_info().name.c_str(), alpha, naive_error.worst, naive_error.infinite, safe_error.worst,
+                safe_error.infinite);
+    EXPECT_EQ(safe_error.infinite, 0) << alpha;
+    EXPECT_LE(safe_error.worst, alpha < 0.005 ? 0.02 : 0.01) << alpha;
+    EXPECT_TRUE(naive_error.infinite > 0 || naive_error.worst > 0.02) << "naive form at alpha " << alpha << " unexpectedly accurate";
+  }
+  // At the fp32 clamp the peak 77 625 is beyond half: inf, where the safe form gives 453.5^2/pi.
+  EXPECT_TRUE(std::isinf(gpu[0])) << gpu[0];
+  EXPECT_NEAR(gpu[1], 453.5 * 453.5 / kPi, 0.01 * 65464);
 }
 
 // The stdlib itself compiled with float = min16float: the SPIR-V carries

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -74,6 +75,12 @@ struct BackendOptions {
   // When set, used instead of the file system (in-memory compiles).
   IncludeResolver resolver;
   InputLimits limits;
+  // compile_hlsl_compute only: HLSL `half` and `min16float` are 16-bit floats
+  // (float16_t, SPIR-V capability Float16; glslang's EShMsgHlslEnable16BitTypes)
+  // and FACET_16BIT_TYPES is defined. The kernel then runs only on a device
+  // with shaderFloat16 (runtime::Context::shader_float16). Off: half is a
+  // 32-bit float, as in Unity's Vulkan back end.
+  bool hlsl_16bit_types = false;
 };
 
 // Owns glslang's process initialisation for its lifetime (one per process is
@@ -129,6 +136,22 @@ class Backend {
 // diagnostics name the line of `source` (as "<compute>:N") or of the include.
 Result<std::vector<uint32_t>> compile_hlsl_compute(const std::string& source, const std::string& entry,
                                                    const BackendOptions& options, Diagnostics& diags);
+
+// Code written for float, rewritten for half precision (half_precision.cpp):
+// every float type name (float, float2..4, floatNxM) becomes the half one and
+// every floating literal gets the half suffix `h` ("0.5" -> "0.5h", "1e-4f" ->
+// "1e-4h"); comments, strings, integers and line breaks stay as they are, so
+// diagnostics keep their lines. Why a rewrite: with hlsl_16bit_types, glslang
+// keeps unsuffixed literals 32-bit and converts no float to half implicitly,
+// so `half a = 0.5 * b;` does not compile; the stdlib stays written for float.
+std::string to_half_precision(std::string_view hlsl);
+
+// A BackendOptions::resolver for 16-bit kernels: `#include "X"` is read from
+// `stdlib_dir` and returned through to_half_precision, except FacetHalf.hlsl
+// (the half overloads of the intrinsics: glslang's HLSL intrinsics take and
+// return 32-bit floats only), which is returned as written. nullopt when the
+// file is not there.
+IncludeResolver half_precision_stdlib(const std::string& stdlib_dir);
 
 // Parses `program` as its fragment stage would be parsed (prelude, includes,
 // `keywords` and `extra_defines` defined) and reads the AST

@@ -30,6 +30,13 @@ constexpr EShMessages kHlslMessages =
     EShMessages(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl | EShMsgHlslDX9Compatible |
                 EShMsgHlslLegalization);
 
+// With BackendOptions::hlsl_16bit_types, half and min16float are float16_t.
+EShMessages messages_for(const BackendOptions& options) {
+  return options.hlsl_16bit_types ? EShMessages(kHlslMessages | EShMsgHlslEnable16BitTypes) : kHlslMessages;
+}
+// Defined for 16-bit kernels (a preamble keeps the source's line numbers).
+constexpr const char* k16BitPreamble = "#define FACET_16BIT_TYPES 1\n";
+
 void configure(glslang::TShader& shader, const std::string& entry, const BackendOptions& options) {
   bool v12 = options.target == TargetEnv::vulkan1_2;
   shader.setEnvInput(glslang::EShSourceHlsl, EShLangCompute, glslang::EShClientVulkan, 100);
@@ -39,6 +46,7 @@ void configure(glslang::TShader& shader, const std::string& entry, const Backend
   shader.setSourceEntryPoint(entry.c_str());
   shader.setHlslIoMapping(true);
   shader.setAutoMapBindings(true);
+  if (options.hlsl_16bit_types) shader.setPreamble(k16BitPreamble);
 }
 
 // Line `line` (1-based) of `text`, without its newline; empty when out of range.
@@ -88,13 +96,13 @@ std::vector<uint32_t> run_glslang_compute(const std::string& source, const std::
   const char* name = kComputeName;
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, entry, options);
-  bool parsed = shader.parse(GetDefaultResources(), 100, false, kHlslMessages, includer);
+  bool parsed = shader.parse(GetDefaultResources(), 100, false, messages_for(options), includer);
   report_log(shader.getInfoLog(), source, includer, diags);
   if (!parsed) return {};
   // The program must die before the shader it links (glslang's rule).
   auto program = std::make_unique<glslang::TProgram>();
   program->addShader(&shader);
-  bool linked = program->link(kHlslMessages) && program->mapIO();
+  bool linked = program->link(messages_for(options)) && program->mapIO();
   report_log(program->getInfoLog(), source, includer, diags);
   if (!linked) return {};
   glslang::SpvOptions spv_options;

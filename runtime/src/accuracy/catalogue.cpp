@@ -215,7 +215,7 @@ void add_ndf(std::vector<RowSpec>& out) {
                      "value = FacetD_GGX(p2, p4);", [](StudyRow& r) { fp16_d_row(r, ggx_naive_half); }));
   out.push_back(spec("D_GGX_FP16Safe", "D", "GGX D |n x h|^2 form, k <= 453.5, in fp16", "fp64 GGX D",
                      "fp16 max rel error (highlight)", "<= 0.4 % wherever finite", kFacet,
-                     "value = FacetD_GGX_FP16Safe(float3(0, 0, 1), normalize(float3(sqrt(1 - p2 * p2), 0, p2)), p4);",
+                     "value = FacetD_GGX_FP16Safe(float3(0.0, 0.0, 1.0), normalize(float3(sqrt(1.0 - p2 * p2), 0.0, p2)), p4);",
                      [](StudyRow& r) { fp16_d_row(r, ggx_cross_half); }));
 }
 

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -112,6 +113,12 @@ int run_accuracy_command(const std::vector<std::string>& args, std::ostream& out
   if (!write_report(output, report_of(*study, output), err)) return 1;
   out << fmt::format("facet bench accuracy: {} rows on {} -> {}\n", study->rows.size(),
                      study->device.empty() ? "no GPU" : study->device, output);
+  if (study->shader_float16) {
+    size_t half_rows = std::count_if(study->rows.begin(), study->rows.end(), [](const StudyRow& r) { return r.fp16_error.has_value(); });
+    out << (*study->shader_float16
+                ? fmt::format("facet bench accuracy: fp16 columns: {} rows in real 16-bit arithmetic\n", half_rows)
+                : std::string("facet bench accuracy: fp16 columns empty: the device has no shaderFloat16\n"));
+  }
   return 0;
 }
 

@@ -69,6 +69,42 @@ std::string image_cell(const StudyRow& r, double ImageError::*figure) {
   double v = worst->*figure;
   return fmt::format("{} ({})", std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("inf"), worst->scene);
 }
+// ---- the fp16 columns (StudyRow::fp16_*): absent from a row without them ----
+void fp16_to_json(const StudyRow& r, nlohmann::ordered_json& j) {
+  if (r.fp16_error) {
+    bool finite = std::isfinite(*r.fp16_error);
+    j["fp16_error"] = finite ? nlohmann::ordered_json(*r.fp16_error) : nlohmann::ordered_json(nullptr);
+    if (!finite) j["fp16_error_is_infinite"] = true;
+  }
+  if (r.fp16_ns_per_eval) j["fp16_ns_per_eval"] = *r.fp16_ns_per_eval;
+  if (!r.fp16_domain.empty()) j["fp16_domain"] = r.fp16_domain;
+}
+void fp16_from_json(const nlohmann::json& j, StudyRow& r) {
+  if (j.contains("fp16_error") && j["fp16_error"].is_number()) r.fp16_error = j["fp16_error"].get<double>();
+  if (j.contains("fp16_error_is_infinite") && j["fp16_error_is_infinite"].is_boolean() &&
+      j["fp16_error_is_infinite"].get<bool>()) {
+    r.fp16_error = std::numeric_limits<double>::infinity();
+  }
+  if (j.contains("fp16_ns_per_eval") && j["fp16_ns_per_eval"].is_number()) r.fp16_ns_per_eval = j["fp16_ns_per_eval"].get<double>();
+  r.fp16_domain = string_of(j, "fp16_domain");
+}
+std::string fp16_error_cell(const std::optional<double>& e) {
+  if (!e) return "-";
+  return std::isfinite(*e) ? fmt::format("{:.3g}", *e) : std::string("inf (overflow)");
+}
+// The two table cells, the domain as the error cell's tooltip.
+std::string fp16_html_cells(const StudyRow& r) {
+  return fmt::format("<td class=\"n\" title=\"{}\">{}</td><td class=\"n\">{}</td>", xml_escape(r.fp16_domain),
+                     fp16_error_cell(r.fp16_error), cell(r.fp16_ns_per_eval, "{:.3g}"));
+}
+std::string fp16_html_note(const Study& study) {
+  if (!study.shader_float16) return "";
+  return *study.shader_float16
+             ? "<p>fp16 columns: the row's HLSL and the stdlib with half for float, run with shaderFloat16 (real 16-bit "
+               "arithmetic); error: max relative error against the fp64 twin over the domain in the cell's tooltip.</p>\n"
+             : "<p>fp16 columns: not measured, the device has no shaderFloat16.</p>\n";
+}
+// ---- end of the fp16 columns ----
 
 Result<StudyRow> row_from_json(const nlohmann::json& j) {
   if (!j.is_object() || !j.contains("id") || !j["id"].is_string()) return failure("a row without an 'id'");
@@ -81,6 +117,7 @@ Result<StudyRow> row_from_json(const nlohmann::json& j) {
   r.image = image_from_json(j);
   r.image_how = string_of(j, "image_how");
   read_driver_fields(j, r);
+  fp16_from_json(j, r);
   return r;
 }
 
@@ -119,6 +156,7 @@ Result<Study> study_from_json(const std::string& text) {
   if (j.contains("driver_statistics_offered") && j["driver_statistics_offered"].is_boolean()) {
     study.driver_statistics_offered = j["driver_statistics_offered"].get<bool>();
   }
+  if (j.contains("shader_float16") && j["shader_float16"].is_boolean()) study.shader_float16 = j["shader_float16"].get<bool>();
   for (const nlohmann::json& r : j["rows"]) {
     Result<StudyRow> row = row_from_json(r);
     if (!row) return failure(fmt::format("row {}: {}", study.rows.size() + 1, row.error().reason));
@@ -143,6 +181,7 @@ std::string study_json(const Study& study) {
       j["image_how"] = r.image_how;
     }
     write_driver_fields(r, j);
+    fp16_to_json(r, j);
     rows.push_back(std::move(j));
   }
   nlohmann::ordered_json out{{"device", study.device},
@@ -150,9 +189,10 @@ std::string study_json(const Study& study) {
                              {"grid", {study.options.width, study.options.height}},
                              {"evaluations_per_invocation", study.options.evaluations},
                              {"frames", study.options.frames},
-                             {"image_samples", study.options.image_samples},
-                             {"rows", rows}};
+                             {"image_samples", study.options.image_samples}};
   if (study.driver_statistics_offered) out["driver_statistics_offered"] = *study.driver_statistics_offered;
+  if (study.shader_float16) out["shader_float16"] = *study.shader_float16;
+  out["rows"] = rows;
   return out.dump(2) + "\n";
 }
 
@@ -171,19 +211,22 @@ std::string study_html(const Study& study) {
                         "RMSE and largest error of the worst scene, in linear radiance (white furnace = 1).</p>\n",
                         study.options.image_samples);
   }
+  html += fp16_html_note(study);
   html += driver_statistics_html(study);
   html += study_chart_svg(study);
   html += "<table><tr><th>group</th><th>row</th><th>what</th><th>against</th><th>metric</th><th>error</th>"
-          "<th>image RMSE</th><th>image max</th><th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th>" +
+          "<th>image RMSE</th><th>image max</th><th>detail</th><th>published anchor</th><th>SPIR-V instr.</th><th>ns/eval</th>"
+          "<th>fp16 GPU error</th><th>fp16 ns/eval</th>" +
           driver_header_cells(study) + "</tr>\n";
   for (const StudyRow& r : study.rows) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td>"
                         "<td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>"
-                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>{}</tr>\n",
+                        "<td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>{}{}</tr>\n",
                         xml_escape(r.group), xml_escape(r.id), xml_escape(r.name), xml_escape(r.reference), xml_escape(r.metric),
                         r.metric == "-" ? std::string("-") : std::isfinite(r.error) ? fmt::format("{:.4g}", r.error) : std::string("inf (overflow)"),
                         image_cell(r, &ImageError::rmse), image_cell(r, &ImageError::max_error), xml_escape(r.detail),
-                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), driver_row_cells(study, r));
+                        xml_escape(r.anchor), r.spirv_instructions, cell(r.ns_per_eval, "{:.3g}"), fp16_html_cells(r),
+                        driver_row_cells(study, r));
   }
   return html + "</table>\n" + driver_raw_statistics_html(study) + "</body></html>\n";
 }

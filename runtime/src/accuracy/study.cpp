@@ -6,6 +6,7 @@
 
 #include "accuracy/catalogue.h"
 #include "accuracy/driver_statistics.h"
+#include "accuracy/fp16_rows.h"
 #include "facet/backend.h"
 #include "facet/runtime/evaluator.h"
 #include "facet/runtime/vulkan_context.h"
@@ -91,6 +92,85 @@ Result<double> median_gpu_ns(const Context& context, const FunctionEvaluator& ev
   return times[times.size() / 2];
 }
 
+// ---- the fp16 columns: real 16-bit arithmetic (fp16_rows.h) ----------------
+
+constexpr const char* kHalfIntrinsics = "#include \"FacetHalf.hlsl\"\n";
+
+// The inputs converted to half once; then the fp32 pass's loop, in half.
+EvalFunction timed_fp16_function(const std::string& includes, const std::string& hlsl, uint32_t evaluations) {
+  std::string body;
+  for (int i = 0; i < kInputs; ++i) body += fmt::format("half h{} = (half)x[{}];\n", i, i);
+  body += "float acc = 0;\n[loop] for (uint k = 0; k < " + std::to_string(evaluations) + "; ++k) {\n"
+          "  half s = (half)(acc * 1e-30);\n";
+  for (int i = 0; i < kInputs; ++i) body += fmt::format("  half p{} = h{} + s;\n", i, i);
+  body += "  half value = 0.0h;\n  {\n" + backend::to_half_precision(hlsl) + "\n  }\n  acc += (float)value;\n}\nr.x = acc;";
+  return {.includes = kHalfIntrinsics + includes, .hlsl = body, .input_count = kInputs, .output_count = 1};
+}
+
+// One evaluation at the point's inputs, in half; the value back as float.
+EvalFunction fp16_error_function(const std::string& includes, const std::string& hlsl) {
+  std::string body;
+  for (int i = 0; i < kInputs; ++i) body += fmt::format("half p{} = (half)x[{}];\n", i, i);
+  body += "half value = 0.0h;\n{\n" + backend::to_half_precision(hlsl) + "\n}\nr.x = (float)value;";
+  return {.includes = kHalfIntrinsics + includes, .hlsl = body, .input_count = kInputs, .output_count = 1};
+}
+
+EvaluatorOptions fp16_evaluator_options() {
+  EvaluatorOptions options;
+  options.backend.stdlib_dir = backend::default_stdlib_dir();
+  options.backend.hlsl_16bit_types = true;
+  options.backend.resolver = backend::half_precision_stdlib(options.backend.stdlib_dir);
+  return options;
+}
+
+std::vector<float> flat_points(const std::vector<Inputs>& points) {
+  std::vector<float> out;
+  for (const Inputs& p : points) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+// Fills fp16_error, fp16_ns_per_eval and fp16_domain of the rows fp16_rows()
+// names; nothing (and study.shader_float16 = false) without shaderFloat16.
+Result<void> measure_fp16(const Context& context, const StudyOptions& options, const std::vector<RowSpec>& specs,
+                          Study& study, Diagnostics& diags) {
+  study.shader_float16 = context.shader_float16();
+  if (!context.shader_float16()) return {};
+  std::vector<Fp16Row> rows = fp16_rows();
+  std::vector<size_t> at;  // rows[i] is study.rows[at[i]]
+  std::vector<EvalFunction> functions{timed_fp16_function("", kNullModel, options.evaluations)};
+  for (const Fp16Row& row : rows) {
+    auto spec = std::find_if(specs.begin(), specs.end(), [&](const RowSpec& s) { return s.row.id == row.id; });
+    if (spec == specs.end()) FACET_ICE(("fp16 row '" + row.id + "' is not in the catalogue").c_str());
+    at.push_back(size_t(spec - specs.begin()));
+    functions.push_back(timed_fp16_function(spec->includes, spec->hlsl, options.evaluations));
+    functions.push_back(fp16_error_function(spec->includes, row.hlsl.empty() ? spec->hlsl : row.hlsl));
+  }
+  auto evaluator = compile_evaluator(context, functions, fp16_evaluator_options(), diags);
+  if (!evaluator) return failure("the fp16 passes did not compile");
+  const uint32_t points = options.width * options.height;
+  const std::vector<float> inputs = varying_inputs(points);
+  auto null_ns = median_gpu_ns(context, *evaluator, 0, inputs, points, options.frames, diags);
+  FACET_TRY(null_ns);
+  const double evaluations = double(points) * options.evaluations;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    StudyRow& row = study.rows[at[i]];
+    auto ns = median_gpu_ns(context, *evaluator, 1 + 2 * i, inputs, points, options.frames, diags);
+    FACET_TRY(ns);
+    row.fp16_ns_per_eval = std::max(0.0, *ns - *null_ns) / evaluations;
+    std::vector<float> domain = flat_points(rows[i].points);
+    auto values = evaluate(context, *evaluator, 2 + 2 * i, domain, uint32_t(rows[i].points.size()));
+    if (!values) {
+      diags.add(DiagId::driver_bad_option, {}, "the fp16 row '" + row.id + "' did not run: " + describe(values.error()));
+      return failure("fp16 evaluation");
+    }
+    row.fp16_error = max_relative_error(values->values, rows[i]);
+    row.fp16_domain = rows[i].domain;
+  }
+  return {};
+}
+
+// ---- end of the fp16 columns ------------------------------------------------
+
 Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>& specs, Study& study,
                          Diagnostics& diags) {
   auto context = create_context(
@@ -116,6 +196,7 @@ Result<void> measure_gpu(const StudyOptions& options, const std::vector<RowSpec>
     FACET_TRY(ns);
     study.rows[i].ns_per_eval = std::max(0.0, *ns - *null_ns) / evaluations;
   }
+  FACET_TRY(measure_fp16(**context, options, specs, study, diags));
   if (options.validation && !(*context)->messages().empty()) {
     diags.add(DiagId::driver_bad_option, {}, "validation layers reported: " + (*context)->messages()[0].text);
     return failure("validation");

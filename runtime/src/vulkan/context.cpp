@@ -41,6 +41,18 @@ struct ContextBuilder {
     return {};
   }
 
+  // shaderFloat16 (Vulkan 1.2 core, VkPhysicalDeviceShaderFloat16Int8Features)
+  // where the device has it, so that 16-bit kernels (BackendOptions::
+  // hlsl_16bit_types) run; Context::shader_float16 says whether it is on.
+  static bool supports_float16(const Context& context) {
+    if (context.info_.api_version < VK_API_VERSION_1_2) return false;
+    VkPhysicalDeviceShaderFloat16Int8Features float16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &float16;
+    vkGetPhysicalDeviceFeatures2(context.physical_, &features);
+    return float16.shaderFloat16 == VK_TRUE;
+  }
+
   // pipeline_statistics: VK_KHR_pipeline_executable_properties and its
   // feature, where the device offers them.
   static VkResultOf<void> create_device(Context& context, bool pipeline_statistics) {
@@ -62,6 +74,13 @@ struct ContextBuilder {
       info.pNext = &executable_info;
       info.enabledExtensionCount = 1;
       info.ppEnabledExtensionNames = &extension;
+    }
+    VkPhysicalDeviceShaderFloat16Int8Features float16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES};
+    context.shader_float16_ = supports_float16(context);
+    float16.shaderFloat16 = VK_TRUE;
+    if (context.shader_float16_) {
+      float16.pNext = const_cast<void*>(info.pNext);
+      info.pNext = &float16;
     }
     if (VkResult result = vkCreateDevice(context.physical_, &info, nullptr, &context.device_); result != VK_SUCCESS) {
       return vk_failure(VkErrorCode::device_failed, fmt::format("cannot create a device on {}", context.info_.name),

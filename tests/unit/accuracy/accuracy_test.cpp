@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -119,6 +121,53 @@ TEST(AccuracyStudyTest, RunsEveryRowOnTheGpuWithValidationAndCountsItsInstructio
   EXPECT_EQ(points, with_error);
 }
 
+// The fp16 columns: the rows' HLSL and the stdlib in real 16-bit arithmetic
+// on lavapipe (shaderFloat16), against their fp64 twins.
+TEST(AccuracyStudyTest, FillsTheFp16ColumnsWithRealHalfArithmeticOnLavapipe) {
+  (void)test_support::kLavapipePinned;
+  Diagnostics diags;
+  StudyOptions options{.validation = true, .width = 16, .height = 16, .evaluations = 2, .frames = 1};
+  auto study = run_study(options, diags);
+  ASSERT_TRUE(study) << (diags.size() ? diags.all()[0].message : "");
+  ASSERT_TRUE(study->shader_float16.has_value());
+  if (!*study->shader_float16) GTEST_SKIP() << study->device << " has no shaderFloat16";
+  std::map<std::string, const StudyRow*> by_id;
+  for (const StudyRow& r : study->rows) by_id[r.id] = &r;
+  const char* half_rows[] = {"D_GGX_fp16", "D_GGX_FP16Safe", "V_SmithGGXCorrelated", "V_SmithGGXCorrelatedFast",
+                             "V_SmithGGXSeparable", "V_SchlickGGX", "V_SchlickGGXKaris", "F_Schlick", "F_SchlickSG",
+                             "Fd_Burley"};
+  for (const char* id : half_rows) {
+    ASSERT_TRUE(by_id.count(id)) << id;
+    const StudyRow& r = *by_id[id];
+    ASSERT_TRUE(r.fp16_error.has_value()) << id;
+    ASSERT_TRUE(r.fp16_ns_per_eval.has_value()) << id;
+    EXPECT_GE(*r.fp16_ns_per_eval, 0.0) << id;
+    EXPECT_FALSE(r.fp16_domain.empty()) << id;
+    std::printf("[ fp16 study ] %-26s fp16 error %-10.4g ns/eval %.4g (fp32 %.4g)\n", id, *r.fp16_error,
+                *r.fp16_ns_per_eval, r.ns_per_eval.value_or(-1));
+  }
+  // The naive GGX D fails in real half where the CPU _Float16 row says it
+  // does; the cross-product form holds the CPU row's budget.
+  const StudyRow& naive = *by_id["D_GGX_fp16"];
+  EXPECT_TRUE(std::isinf(*naive.fp16_error) || *naive.fp16_error > 1.0) << *naive.fp16_error;
+  const StudyRow& safe = *by_id["D_GGX_FP16Safe"];
+  EXPECT_TRUE(std::isfinite(*safe.fp16_error));
+  EXPECT_LE(*safe.fp16_error, 0.01);
+  // V and Schlick F lose little in half off grazing (the _Float16 tests: <= 1 %).
+  for (const char* id : {"V_SmithGGXCorrelated", "V_SmithGGXCorrelatedFast", "F_Schlick"}) {
+    EXPECT_LE(*by_id[id]->fp16_error, 0.01) << id;
+  }
+  for (const StudyRow& r : study->rows) {
+    if (std::find_if(std::begin(half_rows), std::end(half_rows), [&](const char* id) { return r.id == id; }) != std::end(half_rows)) continue;
+    EXPECT_FALSE(r.fp16_error || r.fp16_ns_per_eval) << r.id << " is not evaluated in half";
+  }
+  // The columns reach the JSON and the page.
+  nlohmann::json j = nlohmann::json::parse(study_json(*study));
+  EXPECT_EQ(j["shader_float16"], true);
+  std::string html = study_html(*study);
+  EXPECT_NE(html.find("<th>fp16 GPU error</th><th>fp16 ns/eval</th>"), std::string::npos);
+}
+
 TEST(AccuracyCommandTest, WritesTheReportAndRejectsBadArguments) {
   (void)test_support::kLavapipePinned;
   namespace fs = std::filesystem;
@@ -192,6 +241,25 @@ TEST(AccuracyChartTest, StudiesRoundTripThroughJson) {
     EXPECT_EQ(back->rows[i].error, s.rows[i].error) << s.rows[i].id;  // inf too
     EXPECT_EQ(back->rows[i].ns_per_eval, s.rows[i].ns_per_eval);
   }
+  // The fp16 columns round-trip, an overflow included; a study without them
+  // (written before them) reads with them empty.
+  s.shader_float16 = true;
+  s.rows[0].fp16_error = 0.0035, s.rows[0].fp16_ns_per_eval = 0.5, s.rows[0].fp16_domain = "NoV in [0.01, 1]";
+  s.rows[1].fp16_error = std::numeric_limits<double>::infinity();
+  Result<Study> with_fp16 = study_from_json(study_json(s));
+  ASSERT_TRUE(with_fp16);
+  EXPECT_EQ(with_fp16->shader_float16, std::optional<bool>(true));
+  EXPECT_EQ(with_fp16->rows[0].fp16_error, 0.0035);
+  EXPECT_EQ(with_fp16->rows[0].fp16_ns_per_eval, 0.5);
+  EXPECT_EQ(with_fp16->rows[0].fp16_domain, "NoV in [0.01, 1]");
+  EXPECT_TRUE(with_fp16->rows[1].fp16_error && std::isinf(*with_fp16->rows[1].fp16_error));
+  EXPECT_FALSE(with_fp16->rows[2].fp16_error || with_fp16->rows[2].fp16_ns_per_eval);
+  EXPECT_FALSE(back->shader_float16.has_value());
+  Result<Study> old = study_from_json(R"({"device": "NVIDIA H200", "rows": [{"id": "F_Schlick", "error": 0.036, "ns_per_eval": 0.25}]})");
+  ASSERT_TRUE(old);
+  EXPECT_FALSE(old->rows[0].fp16_error || old->rows[0].fp16_ns_per_eval || old->shader_float16);
+  EXPECT_NE(study_html(*with_fp16).find("inf (overflow)</td><td class=\"n\">-</td></tr>"), std::string::npos);
+
   EXPECT_FALSE(study_from_json("[1, 2]"));
   EXPECT_FALSE(study_from_json("{\"rows\": [{\"group\": \"V\"}]}"));
 }

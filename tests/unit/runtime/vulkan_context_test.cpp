@@ -96,6 +96,20 @@ TEST(VulkanContextTest, CreatesLavapipeWithValidationAndReportsNoMessages) {
 
 // The zero-message assertions of the other tests mean something only if the
 // messenger does record: a buffer with no usage bits is invalid usage.
+// shaderFloat16 is enabled exactly where the device has it (lavapipe does),
+// and the context says so.
+TEST(VulkanContextTest, EnablesShaderFloat16WhereTheDeviceHasIt) {
+  VkResultOf<std::unique_ptr<Context>> context = create_context({.validation = true});
+  ASSERT_TRUE(context) << describe(context.error());
+  VkPhysicalDeviceShaderFloat16Int8Features float16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &float16;
+  vkGetPhysicalDeviceFeatures2((*context)->physical_device(), &features);
+  EXPECT_EQ((*context)->shader_float16(), float16.shaderFloat16 == VK_TRUE);
+  if ((*context)->device_info().name.find("llvmpipe") != std::string::npos) EXPECT_TRUE((*context)->shader_float16());
+  EXPECT_TRUE((*context)->messages().empty()) << (*context)->messages_text();
+}
+
 TEST(VulkanContextTest, ValidationMessengerRecordsAnInvalidCall) {
   VkResultOf<std::unique_ptr<Context>> context = create_context({.validation = true});
   ASSERT_TRUE(context) << describe(context.error());

@@ -51,6 +51,14 @@ struct StudyRow {
   std::optional<uint32_t> driver_registers;     // the kernel's own: a register count does not subtract
   std::optional<uint32_t> driver_code_bytes;    // minus the null kernel's
   std::vector<std::pair<std::string, double>> driver_statistics;  // every statistic as the driver names it, raw
+
+  // Real 16-bit arithmetic on the GPU (docs/accuracy.md, "The fp16 columns"):
+  // the row's HLSL and the stdlib with half for float, on a device with
+  // shaderFloat16. Empty for rows not evaluated in half, without GPU timing,
+  // and on devices without shaderFloat16.
+  std::optional<double> fp16_error;        // max relative error against the fp64 twin over fp16_domain; inf: overflow
+  std::optional<double> fp16_ns_per_eval;  // as ns_per_eval: the half kernel minus the half null pass
+  std::string fp16_domain;                 // the inputs fp16_error is taken over, in words
 };
 
 struct StudyOptions {
@@ -75,6 +83,9 @@ struct Study {
   // Whether the device offered VK_KHR_pipeline_executable_properties (the rows'
   // driver_* fields); nullopt when not recorded (no GPU, or an older study).
   std::optional<bool> driver_statistics_offered;
+  // Whether the device ran the fp16 columns' 16-bit kernels (shaderFloat16);
+  // nullopt when not recorded (no GPU, or a study written before them).
+  std::optional<bool> shader_float16;
 };
 
 // True when the times come from a CPU implementation of Vulkan (lavapipe,

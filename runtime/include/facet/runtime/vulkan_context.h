@@ -2,7 +2,7 @@
 // device chosen by a selector, a device with one compute-capable queue, a
 // command pool and a timestamp query pool. Validation layers on request, with
 // a debug-utils messenger that records every warning and error so that tests
-// can assert there were none.
+// can assert there were none. shaderFloat16 is enabled where the device has it.
 //
 //   auto context = runtime::create_context({.validation = true});   // lavapipe
 //   if (!context) { fmt::print("{}\n", runtime::describe(context.error())); return 1; }
@@ -87,6 +87,10 @@ class Context {
   // True when the device was created with VK_KHR_pipeline_executable_properties
   // and pipelineExecutableInfo on (ContextOptions::pipeline_statistics).
   bool pipeline_statistics() const { return pipeline_statistics_; }
+  // Whether the device has, and the context enabled, shaderFloat16: 16-bit
+  // float arithmetic in shaders (kernels compiled with
+  // backend::BackendOptions::hlsl_16bit_types). Off: such kernels must not run.
+  bool shader_float16() const { return shader_float16_; }
 
   // Every message of severity >= warning since creation (or the last clear).
   const std::vector<ValidationMessage>& messages() const { return messages_; }
@@ -113,6 +117,7 @@ class Context {
   DeviceInfo info_;
   bool validation_ = false;
   bool pipeline_statistics_ = false;
+  bool shader_float16_ = false;
   std::vector<ValidationMessage> messages_;
 };
 
