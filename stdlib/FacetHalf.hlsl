@@ -10,9 +10,9 @@
 #ifndef FACET_HALF_INCLUDED
 #define FACET_HALF_INCLUDED
 
-#ifndef FACET_16BIT_TYPES
-#error "FacetHalf.hlsl needs 16-bit types (half as float16_t): without them these overloads would redefine the float intrinsics"
-#endif
+// Without 16-bit types half is float, the intrinsics already take it, and
+// the file defines nothing (so a shader that includes it compiles both ways).
+#ifdef FACET_16BIT_TYPES
 
 #define FACET_HALF_1(fn, H, F) H fn(H a) { return (H)fn((F)a); }
 #define FACET_HALF_2(fn, H, F) H fn(H a, H b) { return (H)fn((F)a, (F)b); }
@@ -48,4 +48,5 @@ half3 cross(half3 a, half3 b) { return (half3)cross((float3)a, (float3)b); }
 #undef FACET_HALF_ALL
 #undef FACET_HALF_VECTOR
 
+#endif  // FACET_16BIT_TYPES
 #endif  // FACET_HALF_INCLUDED

@@ -106,7 +106,9 @@ TEST(VulkanContextTest, EnablesShaderFloat16WhereTheDeviceHasIt) {
   features.pNext = &float16;
   vkGetPhysicalDeviceFeatures2((*context)->physical_device(), &features);
   EXPECT_EQ((*context)->shader_float16(), float16.shaderFloat16 == VK_TRUE);
-  if ((*context)->device_info().name.find("llvmpipe") != std::string::npos) EXPECT_TRUE((*context)->shader_float16());
+  if ((*context)->device_info().name.find("llvmpipe") != std::string::npos) {
+    EXPECT_TRUE((*context)->shader_float16());
+  }
   EXPECT_TRUE((*context)->messages().empty()) << (*context)->messages_text();
 }
 
