@@ -51,15 +51,15 @@ same_as() {
 case $case in
   accuracy-h200)
     "$facet" bench accuracy --from "$figures/accuracy-h200.json" --out "$chart"
-    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 26 points visible'
+    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 52 points visible'
     ! grep -q 'class="caveat"' "$chart" || { echo "a caveat on GPU timings"; exit 1; }
     same_as accuracy-pareto-h200.svg ;;
   accuracy-lavapipe)
     # The same rows as if timed on lavapipe: the chart must say that its times are relative only.
-    sed 's/"device": "NVIDIA H200"/"device": "llvmpipe (LLVM 15.0.6, 256 bits)", "device_type": "cpu"/' \
+    sed 's/"device": "NVIDIA H200"/"device": "llvmpipe (LLVM 15.0.6, 256 bits)"/; s/"device_type": "discrete-gpu"/"device_type": "cpu"/' \
       "$figures/accuracy-h200.json" > "$work/lavapipe.json"
     "$facet" bench accuracy --from "$work/lavapipe.json" --out "$chart"
-    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 26 points visible'
+    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 52 points visible'
     grep -q 'class="caveat"[^>]*>Caveat: times measured on lavapipe, a CPU implementation of Vulkan: relative only' "$chart" ||
       { echo "no caveat on lavapipe timings"; exit 1; } ;;
   accuracy-crowded)
@@ -67,7 +67,7 @@ case $case in
     awk '/"ns_per_eval": [0-9]/ { n++; sub(/"ns_per_eval": [0-9.e-]+/, sprintf("\"ns_per_eval\": %.8f", 0.0003 * (1 + (n % 5) * 0.02))) }
          { print }' "$figures/accuracy-h200.json" > "$work/crowded.json"
     "$facet" bench accuracy --from "$work/crowded.json" --out "$chart"
-    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 26 points visible'
+    expect 'PASS [0-9]+ labels disjoint, 0 curves visible, 52 points visible'
     grep -q 'class="leader"' "$chart" && grep -q 'class="legend"' "$chart" ||
       { echo "the crowded chart has no leader line or no numbered legend: it does not test them"; exit 1; } ;;
   brdf-polar)

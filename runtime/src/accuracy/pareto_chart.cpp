@@ -186,6 +186,27 @@ std::string axes(const LogAxis& x, const LogAxis& y, const chart::Box& area, con
   return s;
 }
 
+// Where a marker goes: its own place, or, when that would hide part of a
+// marker already placed (two rows of nearly the same cost and error), the
+// nearest free place on growing rings around it, so that every point stays
+// visible; deterministic, and at most a few pixels off for a pair.
+std::pair<double, double> dodge(double x, double y, const std::vector<std::pair<double, double>>& placed) {
+  const double min_distance = 2 * kMarker + 1.5;
+  auto free_at = [&](double cx, double cy) {
+    return std::none_of(placed.begin(), placed.end(),
+                        [&](const auto& p) { return std::hypot(p.first - cx, p.second - cy) < min_distance; });
+  };
+  if (free_at(x, y)) return {x, y};
+  for (double radius = 1; radius <= 8 * min_distance; radius += 1) {
+    for (int k = 0; k < 16; ++k) {
+      double angle = k * M_PI / 8;
+      double cx = x + radius * std::cos(angle), cy = y - radius * std::sin(angle);
+      if (free_at(cx, cy)) return {cx, cy};
+    }
+  }
+  return {x, y};
+}
+
 // One panel: its title, axes, points and labels; `top` is where it starts.
 Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, const LogAxis& x_axis, double top,
             int first_number) {
@@ -214,8 +235,10 @@ Panel panel(const PanelKind& kind, const std::vector<const StudyRow*>& rows, con
   chart::LayoutOptions options{.area = {area.x0 + 2, area.y0 + 2, area.x1 - 2, area.y1 - 2},
                                .font_size = kLabelSize,
                                .first_number = first_number};
+  std::vector<std::pair<double, double>> placed;
   for (const StudyRow* r : points) {
-    double px = x.at(*r->ns_per_eval), py = y_axis.at(kind.error(*r));
+    auto [px, py] = dodge(x.at(*r->ns_per_eval), y_axis.at(kind.error(*r)), placed);
+    placed.push_back({px, py});
     requests.push_back({px, py, kMarker, r->id});
     options.obstacles.push_back(chart::square_around(px, py, kMarker + 1));
   }
