@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -272,20 +273,40 @@ TEST(AccuracyChartTest, TimesFromACpuImplementationAreRecognised) {
   EXPECT_FALSE(timed_on_cpu(on_device("NVIDIA H200")));
 }
 
-// One panel per error kind, every timed row with a finite error a point in
-// its family's colour, the overflowing row named instead, and the caveat
-// only for a CPU device.
+// An image panel, then one panel per error kind; every timed row with a
+// finite error a point in its family's colour (once in its kind's panel and
+// once in the image panel when it has an image error), the overflowing row
+// named instead, and the caveat only for a CPU device.
 TEST(AccuracyChartTest, DrawsOnePanelPerErrorKindColouredByFamily) {
   Study study = h200();
   ASSERT_FALSE(study.rows.empty());
   std::string svg = study_chart_svg(study);
-  EXPECT_EQ(count(svg, "class=\"panel-title\""), 4u);
-  size_t drawable = std::count_if(study.rows.begin(), study.rows.end(), [](const StudyRow& r) {
-    return r.error > 0 && std::isfinite(r.error) && r.ns_per_eval;
+  std::set<ErrorKind> kinds;
+  for (const StudyRow& r : study.rows)
+    if (error_kind(r) != ErrorKind::none) kinds.insert(error_kind(r));  // reference rows have no panel
+  EXPECT_EQ(count(svg, "class=\"panel-title\""), 1 + kinds.size());
+  EXPECT_NE(svg.find("Image error: RMSE in the worst test scene"), std::string::npos);
+  auto timed = [](const StudyRow& r) { return r.ns_per_eval && *r.ns_per_eval > 0; };
+  size_t drawable = std::count_if(study.rows.begin(), study.rows.end(), [&](const StudyRow& r) {
+    return r.error > 0 && std::isfinite(r.error) && timed(r);
   });
-  EXPECT_EQ(count(svg, "class=\"point\""), drawable);
-  EXPECT_EQ(count(svg, "class=\"label\""), drawable);
-  EXPECT_EQ(count(svg, "class=\"legend\""), 0u);  // every H200 label fits at its point
+  size_t imaged = std::count_if(study.rows.begin(), study.rows.end(), [&](const StudyRow& r) {
+    const ImageError* worst = worst_image_error(r);
+    return worst && worst->rmse > 0 && std::isfinite(worst->rmse) && timed(r);
+  });
+  ASSERT_GT(imaged, 0u);
+  EXPECT_EQ(count(svg, "class=\"point\""), drawable + imaged);
+  EXPECT_EQ(count(svg, "class=\"label\""), drawable + imaged);
+  // A label that does not fit at its point is numbered and named in the
+  // legend: the numbers run 1, 2, ... and each names a drawn row.
+  size_t entries = count(svg, "class=\"legend\"");
+  for (size_t n = 1; n <= entries; ++n) {
+    std::string entry = "class=\"legend\">" + std::to_string(n) + ": ";
+    size_t at = svg.find(entry);
+    ASSERT_NE(at, std::string::npos) << n;
+    std::string id = svg.substr(at + entry.size(), svg.find('<', at) - at - entry.size());
+    EXPECT_NE(svg.find("data-id=\"" + id + "\""), std::string::npos) << id;
+  }
   EXPECT_NE(svg.find("not drawn: D_GGX_fp16 (inf: overflow)"), std::string::npos);
   EXPECT_EQ(svg.find("class=\"caveat\""), std::string::npos);
   for (auto [id, colour] : {std::pair{"V_SchlickGGX", "#1f77b4"}, {"F_Schlick", "#ff7f0e"}, {"Fd_Burley", "#2ca02c"},
@@ -295,10 +316,11 @@ TEST(AccuracyChartTest, DrawsOnePanelPerErrorKindColouredByFamily) {
     size_t tag = svg.rfind("<path", at);
     EXPECT_NE(svg.substr(tag, at - tag).find(std::string("stroke=\"") + colour + "\""), std::string::npos) << id;
   }
-  // Hammon's fast V is Pareto-optimal (filled); the separable V, dearer and
-  // further off than it, is dominated (hollow).
+  // In the lobe panel (after the image panel, so a row's last point) Hammon's
+  // fast V is Pareto-optimal (filled); the separable V, dearer and further
+  // off than it, is dominated (hollow).
   auto fill_of = [&](const std::string& id) {
-    size_t at = svg.find("data-id=\"" + id + "\"");
+    size_t at = svg.rfind("data-id=\"" + id + "\"");
     size_t fill = svg.rfind("fill=\"", at);
     return svg.substr(fill + 6, 7);
   };
