@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <vector>
 
 #include "image_io/exr_header.h"
 #include "image_io/image_io.h"
@@ -54,9 +55,56 @@ Result<DecodedImage, std::string> read_image_file(const std::string& path, const
 
 namespace {
 
+// Reads the first `image.channels` channels into `image.pixels` as floats.
+// Asked for any type but the file's own (TypeDesc::UNKNOWN), OpenImageIO
+// converts through a 64 MB buffer, however small the image; so the pixels
+// are read in the file's type into a buffer of the image's size, and
+// OpenImageIO's converter turns them into floats (the conversion it would
+// have made: integers normalised to [0, 1]). Files whose channels differ in
+// type take the converting read.
+bool read_as_float(OIIO::ImageInput& input, DecodedImage& image) {
+  const OIIO::ImageSpec& spec = input.spec();
+  if (!spec.channelformats.empty()) {
+    return input.read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data());
+  }
+  if (spec.format == OIIO::TypeDesc::FLOAT) {
+    return input.read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UNKNOWN, image.pixels.data());
+  }
+  std::vector<std::byte> native;
+  try {
+    native.resize(image.pixels.size() * spec.format.size());
+  } catch (const std::bad_alloc&) {
+    return false;
+  }
+  if (!input.read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UNKNOWN, native.data())) return false;
+  return OIIO::convert_pixel_values(spec.format, native.data(), OIIO::TypeDesc::FLOAT, image.pixels.data(),
+                                    int(image.pixels.size()));
+}
+
+// The reader the file's extension names, opened on the file. Not
+// ImageInput::open(path): when that reader fails, it tries every reader
+// OpenImageIO has (camera RAW, JPEG 2000, DICOM, FFmpeg's video formats...)
+// on the same bytes, so one corrupt texture would reach every decoder the
+// system has. Like Unity's importers, a texture is read as what its name says.
+Result<std::unique_ptr<OIIO::ImageInput>, std::string> open_by_extension(const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension.size() < 2) return unexpected(std::string("the file name has no extension naming its image format"));
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(extension.substr(1));
+  if (!input) {
+    (void)OIIO::geterror();  // consumed: the message below says it
+    return unexpected(fmt::format("no image reader for '{}' files", extension));
+  }
+  OIIO::ImageSpec spec;
+  if (!input->open(path, spec)) {
+    return unexpected(fmt::format("cannot read the image as {} ({})", input->format_name(), input->geterror()));
+  }
+  return input;
+}
+
 Result<DecodedImage, std::string> decode(const std::string& path, const ImageLimits& limits) {
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) return unexpected(fmt::format("cannot read the image ({})", OIIO::geterror()));
+  auto opened = open_by_extension(path);
+  if (!opened) return unexpected(opened.error());
+  std::unique_ptr<OIIO::ImageInput> input = std::move(*opened);
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.depth > 1) return unexpected(fmt::format("the file holds a 3D image ({} slices); textures are 2D", spec.depth));
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1) return unexpected(std::string("empty image"));
@@ -70,9 +118,7 @@ Result<DecodedImage, std::string> decode(const std::string& path, const ImageLim
   } catch (const std::bad_alloc&) {
     return unexpected(fmt::format("not enough memory to decode {}x{} pixels", image.width, image.height));
   }
-  if (!input->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-    return unexpected(fmt::format("cannot read the pixels ({})", input->geterror()));
-  }
+  if (!read_as_float(*input, image)) return unexpected(fmt::format("cannot read the pixels ({})", input->geterror()));
   return image;
 }
 

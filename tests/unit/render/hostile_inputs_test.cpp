@@ -414,6 +414,33 @@ INSTANTIATE_TEST_SUITE_P(
                       FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "}),
     [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
 
+// A texture is read by the reader its extension names, never by every
+// reader OpenImageIO has (camera RAW, JPEG 2000, DICOM, ...) in turn: a
+// valid PNG named .tga is a Targa error, and the same bytes named .png
+// render (the control).
+TEST(TextureFormatByName, APngNamedTgaIsATargaErrorAndRendersNamedPng) {
+  const std::string bytes = grey_png(4, 4, 4);
+  std::string tga = write_file("png_named.tga", bytes);
+  Outcome r = render_expecting_failure("png_named_tga", write_scene("png_named_tga", textured_scene(tga)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("_MainTex: " + tga + ": cannot read the image as targa ("), std::string::npos) << r.err;
+
+  std::string png = write_file("png_named.png", bytes);
+  std::string out = (test_dir() / "png_named.out.png").string();
+  std::string scene = write_scene("png_named_png", textured_scene(png));
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
+  std::ostringstream o, e;
+  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+}
+
+TEST(TextureFormatByName, AnExtensionNoReaderKnowsIsAnErrorNamingIt) {
+  std::string file = write_file("grey.notanimage", grey_png(4, 4, 4));
+  Outcome r = render_expecting_failure("unknown_extension", write_scene("unknown_extension", textured_scene(file)));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("_MainTex: " + file + ": no image reader for '.notanimage' files"), std::string::npos)
+      << r.err;
+}
+
 // The negative control: the real file renders, so the header walk passes
 // what OpenEXR writes and the cases above fail for their attribute alone.
 TEST(HostileExrControl, TheRealExrRenders) {
