@@ -14,7 +14,10 @@
 # coverage and corpus size per target; exits 1 when any target found something.
 #
 # Environment: FACET_FUZZ_BUILD_DIR (default build-fuzz), FACET_FUZZ_JOBS
-# (build parallelism, default: all cores), FACET_FUZZ_NO_BUILD=1 (run the
+# (build parallelism, default: all cores), FACET_FUZZ_WORKERS=N (N libFuzzer
+# worker processes, -jobs=N -workers=N, each for SECONDS; their logs go to
+# build-fuzz/fuzz-logs/<target>/fuzz-<i>.log and the summary adds up their
+# executions), FACET_FUZZ_NO_BUILD=1 (run the
 # targets as built, e.g. while another build of the folder runs), CC/CXX
 # (default clang-14/clang++-14), FACET_FUZZ_REPLAY_ONLY="t1 t2" (those
 # targets only run their committed corpus once, no mutation: for a target
@@ -82,30 +85,46 @@ run_target() {
   local name=fuzz_$1
   local scratch=$build/fuzz-corpus/$1 findings=$build/fuzz-findings/$1 log=$build/fuzz-logs/$1.log
   mkdir -p "$scratch" "$findings" "$(dirname "$log")"
-  local status=0
+  local status=0 workers=${FACET_FUZZ_WORKERS:-1} jobs_dir=$build/fuzz-logs/$1 run_dir=$PWD
+  local parallel=()
+  if [[ $workers -gt 1 ]]; then
+    # libFuzzer writes each worker's log as fuzz-<i>.log in the current folder.
+    rm -rf "$jobs_dir" && mkdir -p "$jobs_dir"
+    parallel=(-jobs="$workers" -workers="$workers")
+    run_dir=$jobs_dir
+  fi
   # shellcheck disable=SC2046  # target_args is a word list by design
-  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0} \
+  (cd "$run_dir" && ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
   LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0} \
     "$build/tests/fuzz/$name" "$scratch" "$root/tests/fuzz/corpus/$1" \
     -max_total_time="$seconds" $(replay_args "$1") -timeout=30 -rss_limit_mb=4096 -print_final_stats=1 \
-    -artifact_prefix="$findings/" $(target_args "$1") "${extra[@]}" >"$log" 2>&1 || status=$?
-  local runs rate final cov corp
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  final=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
-  cov=$(sed -nE 's/.* cov: ([0-9]+).*/\1/p' <<<"$final")
-  corp=$(sed -nE 's/.* corp: ([^ ]+).*/\1/p' <<<"$final")
+    -artifact_prefix="$findings/" $(target_args "$1") "${parallel[@]}" "${extra[@]}") >"$log" 2>&1 || status=$?
+  local runs rate final cov corp logs=("$log")
+  if [[ $workers -gt 1 ]]; then
+    logs=("$jobs_dir"/fuzz-*.log)
+    # Each worker's final statistics: executions add up, coverage is the largest.
+    runs=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: *//p' | awk '{s += $1} END {print s + 0}')
+    rate=$((runs / (seconds > 0 ? seconds : 1)))
+    cov=$(cat "${logs[@]}" | sed -nE 's/^#[0-9]+.* cov: ([0-9]+).*/\1/p' | sort -n | tail -1)
+    corp="$(find "$scratch" -type f | wc -l)_inputs"
+  else
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+    final=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
+    cov=$(sed -nE 's/.* cov: ([0-9]+).*/\1/p' <<<"$final")
+    corp=$(sed -nE 's/.* corp: ([^ ]+).*/\1/p' <<<"$final")
+  fi
   printf '%-15s %10s runs in %4ss  %8s exec/s  cov %-6s corpus %-12s' \
     "$name" "${runs:-?}" "$seconds" "${rate:-?}" "${cov:-?}" "${corp:-?}"
   local found
-  found=$(sed -nE 's/.*Test unit written to (.*)$/\1/p' "$log")
+  found=$(cat "${logs[@]}" | sed -nE 's/.*Test unit written to (.*)$/\1/p')
   if [[ $status -ne 0 || -n $found ]]; then
     echo " FINDING (exit $status)"
     [[ -n $found ]] && echo "  input: $found"
     echo "  log:   $log"
-    grep -m1 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|property failed|internal compiler error' \
-      "$log" | sed 's/^/  /' || true
+    cat "${logs[@]}" | grep -m1 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|property failed|internal compiler error' \
+      | sed 's/^/  /' || true
     return 1
   fi
   echo " no findings"
