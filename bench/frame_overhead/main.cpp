@@ -27,6 +27,7 @@
 #include "facet/runtime/frame_capture.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
+#include "facet/runtime/shader_compiler.h"
 #include "facet/runtime/vulkan_context.h"
 
 namespace fs = std::filesystem;
@@ -96,7 +97,7 @@ bool capture_refused(const std::string& message) {
 Result<Row, std::string> measure(runtime::Context& context, const std::string& path, const Options& o, Skipped& skipped) {
   auto scene = runtime::load_scene(path);
   if (!scene) return unexpected(scene.error().message);
-  runtime::RenderOptions render{.width = o.width, .height = o.height};
+  runtime::RenderOptions render{.width = o.width, .height = o.height, .shader_compiler = runtime::make_shader_compiler()};
   runtime::FrameCapture capture;
   render.capture = &capture;
   auto first = runtime::render_scene(context, *scene, render);

@@ -21,8 +21,10 @@
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/package.h"
+#include "facet/package_file.h"
 #include "facet/result.h"
 #include "facet/source.h"
+#include "facet/support/read_file.h"
 #include "facet/variants.h"
 
 namespace facet {
@@ -230,17 +232,9 @@ class Compiler {
   backend::Backend backend_;
 };
 
-// Input size limits: a .shader (and each included file) and a .facetpkg.
+// The input size limit of a .shader and of each file it includes (a
+// package's is kMaxPackageBytes, facet/package_file.h).
 inline constexpr uint64_t kMaxShaderBytes = 64ull << 20;
-inline constexpr uint64_t kMaxPackageBytes = 1ull << 30;
-
-// Reads a whole file as bytes; refuses directories and files over `max_bytes`
-// with an io_* diagnostic.
-Result<std::string> read_file(const std::string& path, uint64_t max_bytes, Diagnostics& diags);
-
-// Reads and validates a .facetpkg (at most kMaxPackageBytes); its problems
-// name the file.
-Result<package::Package> read_package_file(const std::string& path, Diagnostics& diags);
 
 // Writes `bytes` to `path` through a temporary file and a rename, so that a
 // failure never leaves a partial file behind.

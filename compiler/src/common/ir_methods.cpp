@@ -1,6 +1,7 @@
-// The few member functions of the plain IR types (facet/ir.h).
+// The few member functions of the plain IR types (facet/ir.h), beside the
+// types in the common stage so that a reader of IR (the runtime) needs no sema.
 #include "facet/ir.h"
-#include "lower.h"
+#include "facet/support/text.h"
 
 namespace facet::ir {
 

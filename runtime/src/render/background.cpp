@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "facet/compiler.h"
 #include "render/post.h"
 
 namespace facet::runtime {
@@ -21,7 +20,13 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
   source.name = "procedural sky";
   source.json_path = "camera.clear";
   source.mesh = "quad";
-  source.material.shader = default_stdlib_dir() + "/Shaders/ProceduralSky.shader";
+  if (!library.compiler()) {
+    return unexpected(RenderError{fmt::format(
+        "{}: camera.clear: the procedural sky is the stdlib's ProceduralSky.shader, which needs the development "
+        "layer (facet_shader_compiler); this renderer draws packages only",
+        scene.path)});
+  }
+  source.material.shader = library.compiler()->stdlib_dir + "/Shaders/ProceduralSky.shader";
   source.material.json_path = "camera.clear";
   source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
                                 colour("_Ground", "ground", sky.ground),

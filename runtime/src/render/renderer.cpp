@@ -607,7 +607,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (options.capture && !scene.post.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
-  ShaderLibrary library(options.cache_dir, options.include_dirs);
+  ShaderLibrary library(options.shader_compiler);
   library.set_strict_variants(options.strict_variants);
   Resources resources(context);
   resources.keep_pixels(options.capture != nullptr);

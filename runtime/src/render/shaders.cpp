@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "facet/package_file.h"
 #include "facet/support/render_queue.h"
 #include "facet/support/text.h"
 
@@ -64,17 +65,18 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
     shaders_[path] = std::move(asset);
     return raw;
   }
-  CompileOptions load_options;
-  load_options.backend.include_dirs = include_dirs_;
-  Result<ir::Shader> shader = compiler_.load(path, asset->sources, diags, load_options);
-  if (!shader) return unexpected(render_text(diags, asset->sources));
-  asset->shader = std::move(*shader);
-  Result<std::vector<SelectedPass>> passes = compiler_.select_passes(asset->shader, {}, diags);
-  if (!passes) return unexpected(render_text(diags, asset->sources));
-  asset->passes = std::move(*passes);
-  if (!asset->passes.empty()) {
-    asset->queue = asset->shader.subshaders[asset->passes[0].subshader].queue;
+  if (!compiler_) {
+    return unexpected(fmt::format("{}: a .shader needs the development layer (facet_shader_compiler) to compile its "
+                                  "variants; this renderer draws packages only: build it with `facetc {} -o NAME.facetpkg` "
+                                  "and name the package in the scene",
+                                  path, path));
   }
+  Result<ShaderSource, std::string> source = compiler_->load(path);
+  if (!source) return unexpected(source.error());
+  asset->sources = std::move(source->sources);
+  asset->shader = std::move(source->shader);
+  asset->passes = std::move(source->passes);
+  asset->queue = source->queue;
   ShaderAsset* raw = asset.get();
   shaders_[path] = std::move(asset);
   return raw;
@@ -94,26 +96,21 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
     return it->second.get();
   }
   Timer timer{seconds_};
-  const SelectedPass& selected = asset.passes[pass];
   if (asset.package) return packaged_variant(context, asset, pass, key, compiled);
-  CompileOptions options;
-  options.passes = {std::to_string(selected.pass)};
-  options.keywords = variants::all_keywords(selected.keywords, key);
-  options.cache_dir = cache_dir_;
-  options.backend.include_dirs = include_dirs_;
-  Diagnostics diags;
-  Result<CompiledShader> out = compiler_.compile(asset.shader, options, asset.sources, diags);
-  if (!out) return unexpected(render_text(diags, asset.sources));
-  asset.files_read.insert(out->dependencies.begin(), out->dependencies.end());
+  const size_t selected_pass = asset.passes[pass].pass;
+  Result<CompiledPassVariant, std::string> out = compiler_->compile(
+      asset.shader, asset.sources, selected_pass, variants::all_keywords(asset.passes[pass].keywords, key));
+  if (!out) return unexpected(out.error());
+  asset.files_read.insert(out->files_read.begin(), out->files_read.end());
   auto variant = std::make_unique<LoadedVariant>();
   variant->package = std::move(out->package);
   if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {
-    return unexpected(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected.pass));
+    return unexpected(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected_pass));
   }
   const package::PackageVariant& v = variant->package.passes[0].variants[0];
   variant->keywords = v.keywords;
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, variant->package, v);
-  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected.pass, program.error()));
+  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected_pass, program.error()));
   variant->program = std::move(*program);
   LoadedVariant* raw = variant.get();
   asset.variants[id] = std::move(variant);

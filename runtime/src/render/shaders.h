@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "facet/compiler.h"
+#include "facet/runtime/shader_compiler.h"
 #include "render/program.h"
 
 namespace facet::runtime {
@@ -43,16 +43,18 @@ struct ShaderAsset {
 
 class ShaderLibrary {
  public:
-  explicit ShaderLibrary(std::string cache_dir, std::vector<std::string> include_dirs = {})
-      : cache_dir_(std::move(cache_dir)), include_dirs_(std::move(include_dirs)) {}
+  // `compiler` empty: packages only.
+  explicit ShaderLibrary(std::shared_ptr<const ShaderCompiler> compiler) : compiler_(std::move(compiler)) {}
 
-  // A .shader, or a .facetpkg built by facetc. Errors are the compiler's
-  // diagnostics, rendered as text.
+  // A .facetpkg built by facetc, or a .shader through the ShaderCompiler.
+  // Errors are the compiler's or the package reader's diagnostics, as text.
   Result<ShaderAsset*, std::string> load(const std::string& path);
   // The variant of pass `pass` (an index into asset.passes) with this key,
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
   Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                 const variants::VariantKey& key, bool* compiled);
+  // The development layer, or null when only packages are drawn.
+  const ShaderCompiler* compiler() const { return compiler_.get(); }
   double seconds() const { return seconds_; }
   // Every file the loaded shaders and their compiled variants read, sorted.
   std::vector<std::string> files_read() const;
@@ -72,9 +74,7 @@ class ShaderLibrary {
   Result<LoadedVariant*, std::string> packaged_variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                        const variants::VariantKey& key, bool* compiled);
 
-  Compiler compiler_;
-  std::string cache_dir_;
-  std::vector<std::string> include_dirs_;
+  std::shared_ptr<const ShaderCompiler> compiler_;
   std::map<std::string, std::unique_ptr<ShaderAsset>> shaders_;
   double seconds_ = 0;
   bool strict_variants_ = false;

@@ -10,8 +10,9 @@
 #include <set>
 
 #include "facet/commands.h"
-#include "facet/runtime/gltf.h"
 #include "facet/runtime/renderer.h"
+#include "facet/runtime/scene_inputs.h"
+#include "facet/runtime/shader_compiler.h"
 #include "facet/runtime/vulkan_context.h"
 #include "facet/support/atomic_file.h"
 #include "facet/support/make_rule.h"
@@ -25,66 +26,6 @@ struct RenderArgs {
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false, strict_variants = false;
 };
-
-// A file the render reads, and what it is to the scene, for the error.
-struct SceneInput {
-  std::string path;
-  std::string what;
-};
-
-void add_texture(std::vector<SceneInput>& inputs, const std::optional<runtime::SceneTexture>& texture) {
-  if (texture && !texture->builtin) inputs.push_back({texture->name, "a texture of the scene"});
-}
-
-void add_material(std::vector<SceneInput>& inputs, const runtime::SceneMaterial& material) {
-  inputs.push_back({material.shader, "a shader of the scene"});
-  for (const runtime::SceneProperty& p : material.properties) add_texture(inputs, p.texture);
-}
-
-// The .bin files of a glTF mesh (read once more here: the scene names only
-// the .gltf); none when it does not load, which the render then reports.
-void add_gltf_buffers(std::vector<SceneInput>& inputs, const std::string& mesh) {
-  runtime::MeshError error;
-  if (std::optional<runtime::GltfModel> model = runtime::load_gltf(mesh, error)) {
-    for (const std::string& file : model->buffer_files) inputs.push_back({file, "a buffer of a glTF mesh of the scene"});
-  }
-}
-
-// The scene file, and every mesh (with a glTF mesh's buffers), shader and
-// texture file it names.
-std::vector<SceneInput> scene_inputs(const std::string& scene_path, const runtime::Scene& scene) {
-  std::vector<SceneInput> inputs{{scene_path, "the scene"}};
-  std::set<std::string> gltf_meshes;
-  for (const runtime::SceneObject& o : scene.objects) {
-    if (!o.builtin_mesh) inputs.push_back({o.mesh, "a mesh of the scene"});
-    if (!o.builtin_mesh && runtime::is_gltf_path(o.mesh) && gltf_meshes.insert(o.mesh).second) {
-      add_gltf_buffers(inputs, o.mesh);
-    }
-    add_material(inputs, o.material);
-  }
-  for (const runtime::ScenePostEffect& p : scene.post) add_material(inputs, p.material);
-  for (const runtime::SceneLight& l : scene.lights) add_texture(inputs, l.cookie);
-  return inputs;
-}
-
-// The error for an output that is the same file as an input (compared by
-// device and inode, so another spelling or a hard link counts): writing the
-// image would destroy the input. An output that does not exist yet is none.
-std::optional<std::string> output_clash(const std::vector<std::string>& outputs,
-                                        const std::vector<SceneInput>& inputs) {
-  for (const std::string& output : outputs) {
-    std::error_code ec;
-    if (output.empty() || !std::filesystem::exists(output, ec)) continue;
-    for (const SceneInput& input : inputs) {
-      if (std::filesystem::equivalent(output, input.path, ec)) {
-        return fmt::format("facet render: error: output '{}' is also an input of this render ({}); nothing was "
-                           "written",
-                           output, input.what);
-      }
-    }
-  }
-  return std::nullopt;
-}
 
 void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runtime::Context& context) {
   std::string gpu = f.stats.gpu_ms ? fmt::format("{:.3f} ms", *f.stats.gpu_ms) : std::string("n/a (no timestamps)");
@@ -117,7 +58,7 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
 Result<std::string, std::string> depfile_rule(const RenderArgs& a, const runtime::Scene& scene,
                                               const runtime::RenderedFrame& frame) {
   std::set<std::string> deps(frame.shader_files.begin(), frame.shader_files.end());
-  for (const SceneInput& input : scene_inputs(a.scene, scene)) deps.insert(input.path);
+  for (const runtime::SceneInput& input : runtime::scene_inputs(a.scene, scene)) deps.insert(input.path);
   std::error_code ec;
   for (const std::string& dep : deps) {
     if (std::filesystem::equivalent(a.depfile, dep, ec)) {
@@ -139,7 +80,7 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << scene.error().message << "\n";
     return 1;
   }
-  if (auto clash = output_clash({a.png, a.exr, a.depfile}, scene_inputs(a.scene, *scene))) {
+  if (auto clash = runtime::output_clash("facet render", {a.png, a.exr, a.depfile}, runtime::scene_inputs(a.scene, *scene))) {
     err << *clash << "\n";
     return 1;
   }
@@ -149,9 +90,10 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     return 1;
   }
   auto frame = runtime::render_scene(**context, *scene,
-                                     {.width = a.width, .height = a.height, .cache_dir = a.cache,
-                                      .include_dirs = a.include_dirs, .frames = a.frames,
-                                      .strict_variants = a.strict_variants});
+                                     {.width = a.width, .height = a.height,
+                                      .shader_compiler = runtime::make_shader_compiler(
+                                          {.cache_dir = a.cache, .include_dirs = a.include_dirs}),
+                                      .frames = a.frames, .strict_variants = a.strict_variants});
   if (!frame) {
     err << frame.error().message << "\n";
     return 1;

@@ -24,7 +24,7 @@ class FramesTest : public test_support::LavapipeTest {
   static RenderedFrame render(const Scene& scene, RenderOptions options) {
     options.width = 48;
     options.height = 36;
-    auto frame = render_scene(context(), scene, options);
+    auto frame = render_scene(context(), scene, test_support::with_compiler(options));
     EXPECT_TRUE(frame) << frame.error().message;
     return frame ? std::move(*frame) : RenderedFrame{};
   }
@@ -48,7 +48,7 @@ TEST_F(FramesTest, AfterFrameIsCalledOncePerFrameInOrder) {
 }
 
 TEST_F(FramesTest, ZeroFramesIsAnError) {
-  auto frame = render_scene(context(), example("unlit.json"), {.frames = 0});
+  auto frame = render_scene(context(), example("unlit.json"), test_support::with_compiler({.frames = 0}));
   ASSERT_FALSE(frame);
   EXPECT_NE(frame.error().message.find("frames"), std::string::npos);
 }
@@ -106,7 +106,7 @@ TEST_F(FramesTest, ABareVulkanLoopDrawsTheCaptureToTheSamePixels) {
 
 TEST_F(FramesTest, ACaptureOfImageEffectsIsRefused) {
   FrameCapture capture;
-  auto frame = render_scene(context(), example("post_chain.json"), {.capture = &capture});
+  auto frame = render_scene(context(), example("post_chain.json"), test_support::with_compiler({.capture = &capture}));
   ASSERT_FALSE(frame);
   EXPECT_NE(frame.error().message.find("image effects"), std::string::npos);
 }

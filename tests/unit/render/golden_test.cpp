@@ -39,7 +39,7 @@ class GoldenTest : public test_support::LavapipeTest {
   }
   static RenderedFrame render(const Scene& scene) {
     RenderOptions options{.width = test_support::kGoldenWidth, .height = test_support::kGoldenHeight};
-    auto frame = render_scene(context(), scene, options);
+    auto frame = render_scene(context(), scene, test_support::with_compiler(options));
     EXPECT_TRUE(frame) << frame.error().message;
     return frame ? std::move(*frame) : RenderedFrame{};
   }

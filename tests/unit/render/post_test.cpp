@@ -22,7 +22,7 @@ class PostTest : public test_support::LavapipeTest {
     auto scene = parse_scene(json, write_scene(name, json));
     EXPECT_TRUE(scene) << scene.error().message;
     if (!scene) return unexpected(RenderError{"no scene"});
-    return render_scene(context(), *scene, {});
+    return render_scene(context(), *scene, test_support::with_compiler({}));
   }
   static std::string step(int pass, const std::string& properties = "{}") {
     return R"({"shader": ")" + example_shader("ImageEffects.shader") + R"(", "pass": )" + std::to_string(pass) +

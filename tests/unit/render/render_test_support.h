@@ -14,12 +14,21 @@
 #include "facet/commands.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
+#include "facet/runtime/shader_compiler.h"
 #include "unit/runtime/context_fixture.h"
 
 namespace facet::runtime::test_support {
 
 inline std::string example_shader(const std::string& name) {
   return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name;
+}
+
+// `options` with the development layer, so that scenes may name .shader
+// files (one compiler for the test program, as an engine would keep one).
+inline RenderOptions with_compiler(RenderOptions options) {
+  static const std::shared_ptr<const ShaderCompiler> compiler = make_shader_compiler();
+  if (!options.shader_compiler) options.shader_compiler = compiler;
+  return options;
 }
 
 // A folder of this process's own, so that test runs in parallel do not meet.
@@ -90,7 +99,7 @@ class RenderTest : public LavapipeTest {
     auto scene = parse_scene(json, write_scene(name, json));
     EXPECT_TRUE(scene) << scene.error().message;
     if (!scene) return unexpected(RenderError{"the scene does not parse"});
-    return render_scene(context(), *scene, options);
+    return render_scene(context(), *scene, with_compiler(options));
   }
   static RenderedFrame render(const std::string& name, const std::string& json, const RenderOptions& options = {}) {
     auto frame = try_render(name, json, options);

@@ -47,7 +47,7 @@ class VertexLitTest : public test_support::RenderTest {
     EXPECT_TRUE(scene) << scene.error().message;
     if (!scene) return {};
     RenderOptions options{.width = test_support::kGoldenWidth, .height = test_support::kGoldenHeight};
-    auto frame = render_scene(context(), *scene, options);
+    auto frame = render_scene(context(), *scene, test_support::with_compiler(options));
     EXPECT_TRUE(frame) << frame.error().message;
     return frame ? std::move(*frame) : RenderedFrame{};
   }

@@ -2,7 +2,8 @@
 // files: the runtime draws their variants as built (nothing is compiled), the
 // image is pixel-identical to the one rendered from the sources, and a draw
 // whose keywords have no exact variant in a package is drawn with Unity's
-// closest match and one warning, or is an error with --strict-variants.
+// closest match and one warning, or is an error with --strict-variants. The
+// same holds for facet-play, the runtime without the compiler.
 #include <nlohmann/json.hpp>
 
 #include "facetc_test_util.h"
@@ -130,6 +131,98 @@ TEST_F(FacetRenderPackageTest, ACorruptPackageIsAnErrorNamingTheFile) {
   EXPECT_THAT(run.err, HasSubstr("Phong.facetpkg: ")) << run.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
+
+
+#ifdef FACET_PLAY_PATH
+// facet-play is the runtime alone (facet_render, no compiler): it draws
+// packages and links nothing that compiles shaders.
+class FacetPlayTest : public FacetRenderPackageTest {
+ protected:
+  FacetcRun facet_play(const std::vector<std::string>& args) const {
+    return run(FACET_PLAY_PATH, args, "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ");
+  }
+  // What of the compiler's libraries `program` links: its shared libraries
+  // (readelf) and the symbols linked into it (nm), one line each.
+  std::vector<std::string> compiler_parts(const std::string& program) const {
+    FacetcRun needed = run("readelf", {"-d", program});
+    EXPECT_EQ(needed.exit_code, 0) << needed.err;
+    FacetcRun symbols = run("nm", {"-C", program});
+    EXPECT_EQ(symbols.exit_code, 0) << symbols.err;
+    std::vector<std::string> found;
+    std::istringstream lines(needed.out + symbols.out);
+    for (std::string line; std::getline(lines, line);) {
+      for (const char* part : {"glslang", "SPIRV", "spirv_cross", "spv::", "libtbb", "tbb::", "libcurl", "curl_easy",
+                               "libssl", "libcrypto", "facet::Compiler::", "facet::backend::"}) {
+        if (line.find(part) != std::string::npos) {
+          found.push_back(line);
+          break;
+        }
+      }
+    }
+    return found;
+  }
+};
+
+TEST_F(FacetPlayTest, LinksNoCompilerLibrary) {
+  std::vector<std::string> play = compiler_parts(FACET_PLAY_PATH);
+  EXPECT_TRUE(play.empty()) << play.size() << " compiler symbols or libraries, the first: " << play.front();
+  // The same reading of `facet`, which links the development layer, finds them.
+  EXPECT_FALSE(compiler_parts(FACET_PATH).empty());
+}
+
+TEST_F(FacetPlayTest, RendersASceneOfPackagesPixelIdenticalToTheSceneOfItsShaders) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  build_package("PhongMultiLight.shader", "Phong.facetpkg");
+  write_scene("sources.json", example("Diffuse.shader"), example("PhongMultiLight.shader"));
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--validation"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  FacetcRun play = facet_play({"packages.json", "-o", "play.png", "--validation"});
+  ASSERT_EQ(play.exit_code, 0) << play.err;
+  EXPECT_EQ(play.err, "") << "every draw found its exact variant, and validation reported nothing";
+  EXPECT_THAT(play.out, HasSubstr("variants compiled: 0"));
+  std::string a = read_all(dir_ / "sources.png"), b = read_all(dir_ / "play.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the two images differ";
+}
+
+TEST_F(FacetPlayTest, AShaderInTheSceneIsAnErrorNamingIt) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  write_scene("mixed.json", "Diffuse.facetpkg", example("PhongMultiLight.shader"));
+  FacetcRun play = facet_play({"mixed.json", "-o", "mixed.png"});
+  EXPECT_EQ(play.exit_code, 1);
+  EXPECT_THAT(play.err, HasSubstr(example("PhongMultiLight.shader") + ": a .shader needs the development layer"));
+  EXPECT_THAT(play.err, HasSubstr("draws packages only"));
+  EXPECT_FALSE(fs::exists(dir_ / "mixed.png"));
+}
+
+TEST_F(FacetPlayTest, StrictVariantsMakeAMissingVariantAnError) {
+  write_all(dir_ / "strip.json", R"({"strip": [{"always_off": ["POINT"], "pass": "FORWARD_DELTA"}]})");
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  build_package("PhongMultiLight.shader", "Phong.facetpkg", {"--strip", "strip.json"});
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+
+  FacetcRun closest = facet_play({"packages.json", "-o", "closest.png"});
+  ASSERT_EQ(closest.exit_code, 0) << closest.err;
+  EXPECT_THAT(closest.err, HasSubstr("facet-play: warning: Phong.facetpkg: pass 1 FORWARD_DELTA: no variant for {POINT}"));
+  FacetcRun strict = facet_play({"packages.json", "-o", "strict.png", "--strict-variants"});
+  EXPECT_EQ(strict.exit_code, 1);
+  EXPECT_THAT(strict.err, HasSubstr("POINT"));
+  EXPECT_FALSE(fs::exists(dir_ / "strict.png"));
+}
+
+TEST_F(FacetPlayTest, RefusesAnOutputThatIsTheScene) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  build_package("PhongMultiLight.shader", "Phong.facetpkg");
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+  std::string before = read_all(dir_ / "packages.json");
+  FacetcRun play = facet_play({"packages.json", "-o", "packages.json"});
+  EXPECT_EQ(play.exit_code, 1);
+  EXPECT_THAT(play.err, HasSubstr("facet-play: error: output 'packages.json' is also an input of this render (the scene)"));
+  EXPECT_EQ(read_all(dir_ / "packages.json"), before);
+}
+#endif
 
 }  // namespace
 }  // namespace facet::tools::testing

@@ -1,20 +1,24 @@
 // The forward renderer: Unity's forward-rendering semantics over a Scene
-// (docs/rendering.md). Shaders are loaded and each variant a draw needs is
-// compiled on first use through facet::Compiler; nothing else is compiled.
+// (docs/rendering.md). A scene's shaders are packages (.facetpkg), drawn as
+// built, or, with a ShaderCompiler (facet/runtime/shader_compiler.h),
+// .shader files whose variants are compiled when a draw first needs them;
+// nothing else is compiled.
 //
 //   auto scene = runtime::load_scene("examples/scenes/unlit.json");
-//   auto frame = runtime::render_scene(*context, *scene, {});
+//   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler()});
 //   runtime::write_png(*frame, "out.png");
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/result.h"
 #include "facet/runtime/scene.h"
+#include "facet/runtime/shader_compiler.h"
 
 namespace facet::runtime {
 
@@ -24,8 +28,9 @@ struct FrameCapture;
 
 struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's size
-  std::string cache_dir;      // the compiler's cache folder; empty: none
-  std::vector<std::string> include_dirs;  // #include search folders of the scene's shaders (facetc -I)
+  // Loads and compiles the scene's .shader files; empty: the scene's shaders
+  // must be packages, and a .shader is an error naming it.
+  std::shared_ptr<const ShaderCompiler> shader_compiler;
   // Frames rendered after loading and compiling once, for timing: the first
   // writes every draw's descriptor sets and uniform data; each later one
   // recomputes the camera and time uniforms, rewrites the members that come

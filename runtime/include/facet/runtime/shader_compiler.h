@@ -1,0 +1,60 @@
+// How the renderer gets a .shader's passes and variants: through a
+// ShaderCompiler, which the runtime itself never implements. Without one
+// (RenderOptions::shader_compiler empty) the renderer draws packages only
+// (.facetpkg, built offline by facetc) and links no compiler; the
+// development layer, facet_shader_compiler (make_shader_compiler below),
+// implements it over facet::Compiler, so that a scene may name .shader files
+// whose variants are compiled when a draw first needs them.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/compiler.h"  // SelectedPass and the IR (header only: nothing of the compiler is linked)
+#include "facet/package.h"
+#include "facet/result.h"
+#include "facet/source.h"
+
+namespace facet::runtime {
+
+// A .shader as the renderer draws it: its IR, the passes of the SubShader in
+// use, its render queue, and the source map its messages point into.
+struct ShaderSource {
+  SourceMap sources;
+  ir::Shader shader;
+  std::vector<SelectedPass> passes;
+  int queue = 2000;
+};
+
+// One pass's one variant, compiled: a package holding just it, and every
+// file its compile read.
+struct CompiledPassVariant {
+  package::Package package;
+  std::vector<std::string> files_read;
+};
+
+struct ShaderCompiler {
+  // Loads a .shader; the error is the compiler's messages as text.
+  std::function<Result<ShaderSource, std::string>(const std::string& path)> load;
+  // Compiles one pass of a loaded shader (`pass`: SelectedPass::pass, the
+  // pass's index in its SubShader) with exactly these keywords; `sources`
+  // gains the files the compile reads.
+  std::function<Result<CompiledPassVariant, std::string>(const ir::Shader& shader, SourceMap& sources, size_t pass,
+                                                         const std::vector<std::string>& keywords)>
+      compile;
+  // The stdlib's folder (its Shaders/ holds the procedural sky).
+  std::string stdlib_dir;
+};
+
+struct ShaderCompilerOptions {
+  std::string cache_dir;                  // the compiler's cache folder; empty: none
+  std::vector<std::string> include_dirs;  // #include search folders (facetc -I)
+};
+
+// The development layer (link facet_shader_compiler): a ShaderCompiler over
+// facet::Compiler. Defined there, not in facet_render.
+std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerOptions& options = {});
+
+}  // namespace facet::runtime
