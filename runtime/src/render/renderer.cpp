@@ -495,7 +495,9 @@ struct Recorder {
       for (const ResourceBinding& r : program.resources) {
         if (r.set != set) continue;
         VkDescriptorImageInfo info{};
-        info.sampler = resources.sampler();
+        Result<VkSampler, std::string> sampler = resources.sampler();
+        if (!sampler) return unexpected(error(sampler.error()));
+        info.sampler = *sampler;
         VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
         CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
         if (r.kind != ResourceKind::separate_sampler) {
@@ -686,7 +688,9 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     return unexpected(error("cannot create the framebuffer"));
   }
   VkPipelineCacheCreateInfo cache_info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
-  vkCreatePipelineCache(context.device(), &cache_info, nullptr, &fo.cache);
+  if (vkCreatePipelineCache(context.device(), &cache_info, nullptr, &fo.cache) != VK_SUCCESS) {
+    return unexpected(error("cannot create the pipeline cache"));
+  }
   std::vector<VkPipeline> pipelines;
   for (const Draw& d : list->draws) {
     bool created = false;
@@ -726,7 +730,11 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   UniformArena arena(context);
   Recorder recorder{context, resources, arena, fo.pool};
   recorder.shadows = &shadows;
-  if (!shadows.maps.empty()) recorder.point_sampler = resources.point_sampler();
+  if (!shadows.maps.empty()) {
+    Result<VkSampler, std::string> sampler = resources.point_sampler();
+    if (!sampler) return unexpected(error(sampler.error()));
+    recorder.point_sampler = *sampler;
+  }
   std::optional<CaptureBuilder> capture;
   if (options.capture) {
     *options.capture = FrameCapture{};

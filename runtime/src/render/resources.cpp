@@ -85,26 +85,35 @@ Resources::~Resources() {
   if (point_sampler_) vkDestroySampler(context_.device(), point_sampler_, nullptr);
 }
 
-VkSampler Resources::point_sampler() {
-  if (point_sampler_) return point_sampler_;
+namespace {
+
+Result<VkSampler, std::string> create_sampler(VkDevice device, const VkSamplerCreateInfo& info, VkSampler& kept) {
+  if (kept) return kept;
+  if (VkResult r = vkCreateSampler(device, &info, nullptr, &kept); r != VK_SUCCESS) {
+    kept = VK_NULL_HANDLE;
+    return unexpected(fmt::format("cannot create a sampler (VkResult {})", int(r)));
+  }
+  return kept;
+}
+
+}  // namespace
+
+Result<VkSampler, std::string> Resources::point_sampler() {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = info.minFilter = VK_FILTER_NEAREST;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  vkCreateSampler(context_.device(), &info, nullptr, &point_sampler_);
-  return point_sampler_;
+  return create_sampler(context_.device(), info, point_sampler_);
 }
 
-VkSampler Resources::sampler() {
-  if (sampler_) return sampler_;
+Result<VkSampler, std::string> Resources::sampler() {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
   info.maxLod = VK_LOD_CLAMP_NONE;
-  vkCreateSampler(context_.device(), &info, nullptr, &sampler_);
-  return sampler_;
+  return create_sampler(context_.device(), info, sampler_);
 }
 
 Result<LoadedTexture, std::string> Resources::solid(const std::array<float, 4>& rgba, VkImageViewType view,

@@ -44,8 +44,9 @@ class Resources {
   // Loads every light's cookie before recording; errors name
   // "<scene>: lights[i].cookie".
   Result<void, std::string> load_cookies(const Scene& scene);
-  VkSampler sampler();        // trilinear, repeat
-  VkSampler point_sampler();  // nearest, clamp to edge: depth images (shadow maps)
+  // Created on first use and kept; an error when the device refuses one.
+  Result<VkSampler, std::string> sampler();        // trilinear, repeat
+  Result<VkSampler, std::string> point_sampler();  // nearest, clamp to edge: depth images (shadow maps)
 
   size_t textures_loaded() const { return files_loaded_; }
 
