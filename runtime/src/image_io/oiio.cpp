@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "image_io/exr_header.h"
+#include "image_io/jpeg_header.h"
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
@@ -21,13 +22,16 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
   return {};
 }
 
-// OpenEXR trusts its header's sizes and OpenImageIO decodes RLE BMPs while
-// opening them (exr_header.h): both headers are checked first; other
-// formats go to OpenImageIO as they are.
+// OpenEXR trusts its header's sizes, OpenImageIO decodes RLE BMPs and a
+// JPEG's IPTC block while opening them (exr_header.h, jpeg_header.h): those
+// headers are checked first; other formats go to OpenImageIO as they are.
 std::optional<std::string> header_problem(const std::string& path, const ImageLimits& limits) {
   std::ifstream file(path, std::ios::binary);
   if (!file) return std::nullopt;
   if (std::optional<std::string> problem = bmp_header_problem(file, limits)) return problem;
+  file.clear();
+  file.seekg(0);
+  if (std::optional<std::string> problem = jpeg_iptc_problem(file)) return problem;
   file.clear();
   file.seekg(0);
   if (!is_exr(file)) return std::nullopt;

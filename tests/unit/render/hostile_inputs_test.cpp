@@ -387,7 +387,11 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
 // OpenImageIO throw std::length_error while opening it (an uncaught
 // exception: the process ended); EXR files whose dataWindow is 50 million
 // pixels wide made OpenEXR allocate and free for over 30 s under ASan.
-// Both headers are checked before OpenImageIO opens the file.
+// Both headers are checked before OpenImageIO opens the file. On 2026-12-06
+// it found JPEGs whose Photoshop IPTC block (APP13) declares more bytes than
+// its marker holds, or a record longer than the block: OpenImageIO 2.4 reads
+// past the marker's data while opening them (ASan: heap-buffer-overflow in
+// decode_iptc_iim); the block is checked first too (jpeg_header.h).
 struct FuzzFoundImage {
   const char* file;
   const char* expected;
@@ -411,7 +415,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(FuzzFoundImage{"bmp-rle-738197508-rows.bmp", "the BMP header: the image is 4x738197508 pixels"},
                       FuzzFoundImage{"bmp-rle-tall-2.bmp", "the BMP header: "},
                       FuzzFoundImage{"exr-data-window-50331655-wide.exr", "the EXR dataWindow: the image is "},
-                      FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "}),
+                      FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "},
+                      FuzzFoundImage{"jpeg-iptc-past-its-marker.jpg",
+                                     "the JPEG's IPTC block (APP13) declares 28761 bytes of records, but its marker "
+                                     "holds 89"},
+                      FuzzFoundImage{"jpeg-iptc-record-past-its-block.jpg",
+                                     "an IPTC record of the JPEG (APP13) declares 23879 bytes, but 84 are left in its "
+                                     "block"}),
     [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
 
 // A texture is read by the reader its extension names, never by every

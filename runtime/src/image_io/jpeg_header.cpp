@@ -1,0 +1,89 @@
+#include "image_io/jpeg_header.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace facet::runtime {
+namespace {
+
+constexpr uint8_t kApp13 = 0xED;
+constexpr uint8_t kStartOfScan = 0xDA;
+constexpr uint8_t kEndOfImage = 0xD9;
+
+size_t big_endian16(const uint8_t* p) { return size_t(p[0]) << 8 | p[1]; }
+
+// The IPTC records of an APP13 marker's data as OpenImageIO reads them:
+// "Photoshop 3.0\0", "8BIM", resource 0x0404, 4 bytes, a 2-byte size, then
+// records of 0x1C, record, dataset, a 2-byte length and the data, for as long
+// as the size lasts and the next byte is 0x1C.
+std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
+  static constexpr char kPhotoshop[] = "Photoshop 3.0";
+  constexpr size_t kHeader = sizeof(kPhotoshop) + 4 + 2 + 4 + 2;  // 26: the records start here
+  if (data.size() < sizeof(kPhotoshop) || std::memcmp(data.data(), kPhotoshop, sizeof(kPhotoshop)) != 0) {
+    return std::nullopt;  // not Photoshop's block: OpenImageIO skips it
+  }
+  if (data.size() < kHeader) {
+    return fmt::format("the JPEG's IPTC block (APP13) ends at byte {} of its {}-byte header", data.size(), kHeader);
+  }
+  const uint8_t* resource = data.data() + sizeof(kPhotoshop);
+  if (std::memcmp(resource, "8BIM", 4) != 0 || big_endian16(resource + 4) != 0x0404) return std::nullopt;
+  const size_t declared = big_endian16(resource + 10);
+  const size_t available = data.size() - kHeader;
+  if (declared > available) {
+    return fmt::format("the JPEG's IPTC block (APP13) declares {} bytes of records, but its marker holds {}", declared,
+                       available);
+  }
+  const uint8_t* record = data.data() + kHeader;
+  size_t left = declared;
+  while (left > 0 && record[0] == 0x1C) {
+    if (left < 5) return fmt::format("the JPEG's IPTC block (APP13) ends inside a record's 5-byte header");
+    const size_t length = big_endian16(record + 3);
+    if (length > left - 5) {
+      return fmt::format("an IPTC record of the JPEG (APP13) declares {} bytes, but {} are left in its block", length,
+                         left - 5);
+    }
+    record += 5 + length;
+    left -= 5 + length;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+// The markers are read as libjpeg reads them: bytes before a marker's 0xFF
+// are skipped (with a warning), a length below 2 holds no data, and a file
+// that ends inside a marker is padded with end-of-image markers.
+std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
+  uint8_t soi[2] = {};
+  if (!file.read(reinterpret_cast<char*>(soi), 2) || soi[0] != 0xFF || soi[1] != 0xD8) return std::nullopt;
+  for (;;) {
+    int marker = 0;
+    while (marker == 0) {  // 0xFF 0x00 is a stuffed byte, not a marker
+      int byte = file.get();
+      while (byte != EOF && byte != 0xFF) byte = file.get();
+      while (byte == 0xFF) byte = file.get();
+      if (byte == EOF) return std::nullopt;
+      marker = byte;
+    }
+    if (marker == kStartOfScan || marker == kEndOfImage) return std::nullopt;
+    if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) continue;  // markers without a length
+    uint8_t size[2] = {};
+    if (!file.read(reinterpret_cast<char*>(size), 2)) return std::nullopt;
+    const size_t length = big_endian16(size);
+    if (length < 2) continue;
+    if (marker != kApp13) {
+      file.seekg(std::streamoff(length - 2), std::ios::cur);
+      continue;
+    }
+    std::vector<uint8_t> data(length - 2);  // at most 65533 bytes
+    file.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size()));
+    for (size_t i = size_t(file.gcount()); i < data.size(); ++i) data[i] = i % 2 == 0 ? 0xFF : kEndOfImage;
+    if (std::optional<std::string> problem = iptc_problem(data)) return problem;
+    if (!file) return std::nullopt;
+  }
+}
+
+}  // namespace facet::runtime
