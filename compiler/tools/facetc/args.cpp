@@ -21,7 +21,7 @@ namespace {
 struct RawArgs {
   std::vector<std::string> inputs, defines, include_dirs, passes, keywords, disabled_groups;
   std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage, report;
-  std::vector<std::string> material_files, strip_files;
+  std::vector<std::string> material_files, strip_files, variant_files;
   std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
   bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
@@ -70,6 +70,10 @@ void add_options(CLI::App& app, RawArgs& raw) {
                  "a material manifest (JSON): only the shader_feature combinations its materials use")
       ->allow_extra_args(false);
   app.add_option("--strip", raw.strip_files, "a strip filter (JSON): deny/allow/always_on/always_off rules")
+      ->allow_extra_args(false);
+  app.add_option("--variants", raw.variant_files,
+                 "a variant collection (JSON, as facet render --emit-variants writes it): only the passes and keyword "
+                 "sets it lists")
       ->allow_extra_args(false);
   app.add_option("--emit-strip", raw.emit_strip,
                  "with --report: write the strip filter that applies the summary's what-ifs to FILE");
@@ -261,8 +265,8 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
   bool strips = args.mode == Mode::package || args.mode == Mode::report || args.mode == Mode::depfile_only ||
                 args.mode == Mode::check || args.mode == Mode::estimate ||
                 (args.mode == Mode::dump && args.dump == DumpKind::package);
-  if ((!raw.material_files.empty() || !raw.strip_files.empty()) && !strips) {
-    return "--materials and --strip apply to packages, --report, --estimate and --check";
+  if ((!raw.material_files.empty() || !raw.strip_files.empty() || !raw.variant_files.empty()) && !strips) {
+    return "--materials, --strip and --variants apply to packages, --report, --estimate and --check";
   }
   if (!raw.emit_strip.empty() && args.mode != Mode::report) return "--emit-strip goes with --report";
   if (!raw.emit_strip.empty() && !args.output.empty() && same_path(raw.emit_strip, args.output)) {
@@ -320,6 +324,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.stats = raw.stats;
   args.material_files = raw.material_files;
   args.strip_files = raw.strip_files;
+  args.variant_files = raw.variant_files;
   args.emit_strip_file = raw.emit_strip;
   args.jobs_format = raw.emit_jobs == "json" ? JobsFormat::json : JobsFormat::ninja;
   args.program = raw.program;

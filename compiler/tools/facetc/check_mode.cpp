@@ -182,6 +182,7 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
     add_inputs(inputs, paths, "a shader");
     add_inputs(inputs, args.material_files, "a materials file");
     add_inputs(inputs, args.strip_files, "a strip filter");
+    add_inputs(inputs, args.variant_files, "a variant collection");
     if (auto clash = output_input_clash({args.junit_file, args.sarif_file}, inputs)) errors.push_back(*clash);
   }
   if (!errors.empty()) {

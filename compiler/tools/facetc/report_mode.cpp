@@ -43,6 +43,7 @@ std::vector<variants::KeywordList> material_keywords(const std::vector<ManifestM
 CompileOptions stripped_options(CompileOptions options, const StripInputs& strip, const ir::Shader& shader) {
   if (strip.materials) options.materials = material_keywords(*strip.materials, shader);
   options.strip = strip.filter;
+  if (strip.collection) apply_collection(options, *strip.collection, shader);
   return options;
 }
 
@@ -155,6 +156,7 @@ int run_report(const FacetcArgs& args, const Compiler& compiler, const StripInpu
   std::vector<RunInput> inputs;
   add_inputs(inputs, args.material_files, "a materials file");
   add_inputs(inputs, args.strip_files, "a strip filter");
+  add_inputs(inputs, args.variant_files, "a variant collection");
   std::vector<std::string> errors;
   std::vector<std::string> paths = find_shaders(args.inputs, errors);
   if (!errors.empty()) {

@@ -7,6 +7,7 @@
 #include "args.h"
 #include "facet/compiler.h"
 #include "run.h"
+#include "variant_collection.h"
 
 namespace facet::tools {
 
@@ -22,10 +23,12 @@ struct ManifestMaterial {
 Result<std::vector<ManifestMaterial>> read_material_manifest(const std::string& path, SourceMap& sources,
                                                              Diagnostics& diags);
 
-// The stripping inputs of a run: --materials manifests and --strip filters.
+// The stripping inputs of a run: --materials manifests, --strip filters and
+// --variants collections.
 struct StripInputs {
   std::optional<std::vector<ManifestMaterial>> materials;  // nullopt without --materials
   variants::StripFilter filter;
+  std::optional<VariantCollection> collection;  // nullopt without --variants
 };
 
 // The keyword lists of the manifest materials that use `shader` (explicit

@@ -133,6 +133,12 @@ uint64_t build_id(const FacetcArgs& args, const Compiler& compiler, const ir::Sh
 Result<Produced> build_package(const FacetcArgs& args, const Compiler& compiler, const StripInputs& strip,
                                const ir::Shader& shader, const std::string& input, SourceMap& sources,
                                Diagnostics& diags) {
+  if (strip.collection) {
+    if (std::optional<std::string> problem = collection_problem(*strip.collection, shader)) {
+      diags.add(DiagId::driver_bad_option, shader.span, *problem);
+      return failure("not in the collection");
+    }
+  }
   CompileOptions options = stripped_options(compile_options(args, false), strip, shader);
   // A bar only for people: on a terminal, with text diagnostics.
   ProgressBar bar(std::cerr, isatty(STDERR_FILENO) == 1 && args.diagnostics_format == DiagnosticsFormat::text);
@@ -313,7 +319,7 @@ bool to_stdout(const std::string& output) { return output.empty() || output == "
 
 // The files this run reads for `input`: the shaders named on the command
 // line, the input's includes and those of the inputs before it, the
-// materials and strip files.
+// materials, strip and variant collection files.
 std::vector<RunInput> run_inputs(const FacetcArgs& args, const std::string& input,
                                  const std::vector<std::string>& deps, const std::vector<std::string>& read_before) {
   std::vector<RunInput> inputs{{input, "the shader"}};
@@ -322,6 +328,7 @@ std::vector<RunInput> run_inputs(const FacetcArgs& args, const std::string& inpu
   add_inputs(inputs, args.inputs, "a shader of this run");
   add_inputs(inputs, read_before, "a file an earlier input read");
   add_inputs(inputs, args.material_files, "a materials file");
+  add_inputs(inputs, args.variant_files, "a variant collection");
   add_inputs(inputs, args.strip_files, "a strip filter");
   return inputs;
 }
@@ -395,6 +402,23 @@ std::optional<StripInputs> read_strip_inputs(const FacetcArgs& args, Console& co
     auto read = read_strip_filter(file, sources, diags);
     show_diagnostics(args, diags, sources, console, json_diags);
     if (read) inputs.filter.rules.insert(inputs.filter.rules.end(), read->rules.begin(), read->rules.end());
+    ok = ok && read;
+  }
+  for (const std::string& file : args.variant_files) {
+    SourceMap sources;
+    Diagnostics diags;
+    auto read = read_variant_collection(file, sources, diags);
+    show_diagnostics(args, diags, sources, console, json_diags);
+    if (read && !inputs.collection) inputs.collection.emplace();
+    if (read) {
+      for (auto& [shader, passes] : read->shaders) {
+        for (auto& [index, pass] : passes) {
+          CollectedPass& into = inputs.collection->shaders[shader][index];
+          if (into.name.empty()) into.name = pass.name;
+          into.variants.insert(pass.variants.begin(), pass.variants.end());
+        }
+      }
+    }
     ok = ok && read;
   }
   if (!ok) return std::nullopt;

@@ -24,6 +24,9 @@ DrawRecord pass_record(const ObjectState& object, size_t p) {
                                              : fmt::format("{} ({})", object.scene->json_path, object.scene->name);
   record.object_index = object.index;
   record.shader = object.shader->shader.name;
+  record.shader_path = object.shader->path;
+  record.pass_index = object.shader->passes[p].pass;
+  record.pass_name = pass.name;
   record.pass = pass.name.empty() ? std::to_string(object.shader->passes[p].pass)
                                   : fmt::format("{} {}", object.shader->passes[p].pass, pass.name);
   record.light_mode = pass.tag("LightMode");

@@ -1,5 +1,6 @@
 // facet render scene.json -o out.png [--exr out.exr] [--width W --height H]
 //   [--device SEL] [--stats] [--frames N] [--explain] [--validation] [--cache DIR] [--depfile FILE]
+//   [--emit-variants FILE]
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -21,7 +22,7 @@ namespace facet::tool {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, exr, device, cache, depfile;
+  std::string scene, png, exr, device, cache, depfile, variants;
   std::vector<std::string> include_dirs;
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false, strict_variants = false;
@@ -80,7 +81,8 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << scene.error().message << "\n";
     return 1;
   }
-  if (auto clash = runtime::output_clash("facet render", {a.png, a.exr, a.depfile}, runtime::scene_inputs(a.scene, *scene))) {
+  if (auto clash = runtime::output_clash("facet render", {a.png, a.exr, a.depfile, a.variants},
+                                          runtime::scene_inputs(a.scene, *scene))) {
     err << *clash << "\n";
     return 1;
   }
@@ -122,6 +124,12 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
       return 1;
     }
   }
+  if (!a.variants.empty()) {
+    if (auto w = support::write_file_atomically(a.variants, runtime::variant_collection_json(*frame)); !w) {
+      err << fmt::format("facet render: error: cannot write the variant collection '{}': {}\n", a.variants, w.error());
+      return 1;
+    }
+  }
   if (!rule.empty()) {
     if (auto w = support::write_file_atomically(a.depfile, rule); !w) {
       err << fmt::format("facet render: error: cannot write the depfile '{}': {}\n", a.depfile, w.error());
@@ -151,6 +159,9 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_option("--frames", a.frames, "render the frame N times after compiling once; --stats prints the median frame time")
       ->check(CLI::Range(1, 100000));
   app.add_option("-I,--include-dir", a.include_dirs, "add a folder to the #include search path of the scene's shaders");
+  app.add_option("--emit-variants", a.variants,
+                 "also write the variant collection of the frame (JSON: every pass and keyword set drawn, per shader) "
+                 "for facetc --variants");
   app.add_option("--depfile", a.depfile, "also write a make rule of every file the render read (scene, meshes, textures, shaders, includes)");
   app.add_flag("--explain", a.explain, "list every draw with its pass, variant keywords and why");
   app.add_flag("--strict-variants", a.strict_variants,

@@ -6,6 +6,9 @@
 // same holds for facet-play, the runtime without the compiler.
 #include <nlohmann/json.hpp>
 
+#include <set>
+#include <tuple>
+
 #include "facetc_test_util.h"
 
 namespace facet::tools::testing {
@@ -132,6 +135,94 @@ TEST_F(FacetRenderPackageTest, ACorruptPackageIsAnErrorNamingTheFile) {
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+
+// The (pass name, sorted keywords) pairs a dumped package holds, or a
+// collection lists for one shader.
+using VariantPairs = std::set<std::pair<std::string, std::vector<std::string>>>;
+
+VariantPairs package_variants(const nlohmann::json& dump) {
+  VariantPairs out;
+  for (const auto& pass : dump.at("passes")) {
+    for (const auto& v : pass.at("variants")) {
+      auto keywords = v.at("keywords").get<std::vector<std::string>>();
+      std::sort(keywords.begin(), keywords.end());
+      out.insert({pass.value("name", std::string()), keywords});
+    }
+  }
+  return out;
+}
+
+VariantPairs collected_variants(const nlohmann::json& collection, const std::string& shader) {
+  VariantPairs out;
+  for (const auto& s : collection.at("shaders")) {
+    if (s.at("shader") != shader) continue;
+    for (const auto& pass : s.at("passes")) {
+      for (const auto& keywords : pass.at("variants")) {
+        out.insert({pass.value("name", std::string()), keywords.get<std::vector<std::string>>()});
+      }
+    }
+  }
+  return out;
+}
+
+TEST_F(FacetRenderPackageTest, AVariantCollectionBuildsExactlyTheVariantsTheSceneDraws) {
+  write_scene("sources.json", example("Diffuse.shader"), example("PhongMultiLight.shader"));
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--emit-variants", "variants.json"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  auto collection = nlohmann::json::parse(read_all(dir_ / "variants.json"));
+  size_t full = 0, collected = 0;
+
+  for (const auto& [shader, name, package] : {std::tuple{"Diffuse.shader", "Examples/Diffuse", "Diffuse.facetpkg"},
+                                              std::tuple{"PhongMultiLight.shader", "Examples/PhongMultiLight",
+                                                         "Phong.facetpkg"}}) {
+    build_package(shader, package, {"--variants", "variants.json"});
+    VariantPairs built = package_variants(nlohmann::json::parse(facetc({"--dump", package}).out));
+    VariantPairs drawn = collected_variants(collection, name);
+    EXPECT_FALSE(drawn.empty()) << name;
+    EXPECT_EQ(built, drawn) << name << ": the package holds exactly the variants the scene draws";
+    build_package(shader, std::string("full_") + package);
+    full += package_variants(nlohmann::json::parse(facetc({"--dump", std::string("full_") + package}).out)).size();
+    collected += built.size();
+  }
+  EXPECT_GT(full, collected) << "the full builds hold variants the scene does not draw";
+  // PhongMultiLight's ForwardAdd pass is drawn for the point and the spot light.
+  VariantPairs phong = collected_variants(collection, "Examples/PhongMultiLight");
+  EXPECT_TRUE(phong.count({"FORWARD_DELTA", {"POINT"}})) << read_all(dir_ / "variants.json");
+  EXPECT_TRUE(phong.count({"FORWARD_DELTA", {"SPOT"}})) << read_all(dir_ / "variants.json");
+
+  write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+  FacetcRun packages = facet_render({"packages.json", "-o", "packages.png", "--strict-variants", "--validation"});
+  ASSERT_EQ(packages.exit_code, 0) << packages.err;
+  EXPECT_EQ(packages.err, "") << "no draw misses its variant";
+  EXPECT_TRUE(read_all(dir_ / "sources.png") == read_all(dir_ / "packages.png")) << "the two images differ";
+}
+
+TEST_F(FacetRenderPackageTest, BadVariantCollectionsAreLocatedErrors) {
+  struct Case {
+    const char* json;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {R"({"shaders": 3})", "expected an object with a 'shaders' array"},
+      {R"({"shaders": [{"shader": "Examples/Diffuse"}]})", "shaders[0].passes: expected an array of passes"},
+      {R"({"shaders": [{"shader": "Examples/Diffuse", "passes": [{"pass": "x", "variants": []}]}]})",
+       "shaders[0].passes[0].pass: expected the pass's 0-based index in its SubShader"},
+      {R"({"shaders": [{"shader": "Examples/Diffuse", "passes": [{"pass": 0, "variants": [[1]]}]}]})",
+       "shaders[0].passes[0].variants[0][0]: expected a keyword string"},
+      {R"({"shaders": [{"shader": "Examples/Other", "passes": []}]})",
+       "shader 'Examples/Diffuse' is not in the variant collection (--variants)"},
+      {R"({"shaders": [{"shader": "Examples/Diffuse", "passes": [{"pass": 7, "variants": [[]]}]}]})",
+       "the variant collection lists pass 7 of shader 'Examples/Diffuse', which has"},
+      {R"({"shaders": [{"shader": )", "variants.json:1:"},
+  };
+  for (const Case& c : cases) {
+    write_all(dir_ / "variants.json", c.json);
+    FacetcRun run = facetc({example("Diffuse.shader"), "--variants", "variants.json", "-o", "out.facetpkg"});
+    EXPECT_EQ(run.exit_code, 1) << c.json;
+    EXPECT_THAT(run.err, HasSubstr(c.expected)) << c.json;
+    EXPECT_FALSE(fs::exists(dir_ / "out.facetpkg")) << c.json;
+  }
+}
 
 #ifdef FACET_PLAY_PATH
 // facet-play is the runtime alone (facet_render, no compiler): it draws

@@ -53,7 +53,10 @@ struct DrawRecord {
   std::string object;           // "objects[1] (ball)"
   size_t object_index = 0;
   std::string shader;           // the shader's name
+  std::string shader_path;      // the .shader or .facetpkg it was loaded from
   std::string pass;             // "1 FORWARD_DELTA"
+  size_t pass_index = 0;        // the pass's index in its SubShader (in its package, for a package)
+  std::string pass_name;        // "FORWARD_DELTA" ("" when unnamed)
   std::string light_mode;       // the pass's LightMode tag ("" when none)
   std::string light;            // "lights[2] (point)" or "" when the pass has no light
   int queue = 2000;
@@ -106,5 +109,10 @@ Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::strin
 
 // One line per draw, as `facet render --explain` prints them.
 std::string explain_text(const RenderedFrame& frame);
+
+// The variant collection of a frame (Unity's ShaderVariantCollection, as
+// `facetc --variants` reads it): per shader name, per pass, every keyword set
+// a draw used, sorted, as JSON. `facet render --emit-variants` writes it.
+std::string variant_collection_json(const RenderedFrame& frame);
 
 }  // namespace facet::runtime
