@@ -463,5 +463,39 @@ TEST(HostileExrControl, TheRealExrRenders) {
   EXPECT_TRUE(std::filesystem::exists(out));
 }
 
+// The control of the JPEG IPTC check: a real JPEG (tests/fuzz/corpus/image/
+// small.jpg, written by oiiotool) with a well-formed Photoshop IPTC block in
+// an APP13 marker after its SOI renders.
+TEST(JpegIptcControl, AJpegWithAWellFormedIptcBlockRenders) {
+  std::ifstream in(std::string(FACET_SOURCE_DIR) + "/tests/fuzz/corpus/image/small.jpg", std::ios::binary);
+  std::string jpeg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(jpeg.size(), 2u);
+  const std::string caption = "a caption";
+  std::string records = std::string("\x1c\x02\x78", 3) + char(0) + char(caption.size()) + caption;
+  std::string block = std::string("Photoshop 3.0", 14) + "8BIM" + std::string("\x04\x04", 2) + std::string(4, '\0') +
+                      char(records.size() >> 8) + char(records.size() & 0xff) + records;
+  size_t length = block.size() + 2;
+  std::string app13 = std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) + block;
+  std::string with_iptc = jpeg.substr(0, 2) + app13 + jpeg.substr(2);
+  std::string path = write_file("with_iptc.jpg", with_iptc);
+  std::string out = (test_dir() / "with_iptc.out.png").string();
+  std::string scene = write_scene("with_iptc", textured_scene(path));
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
+  std::ostringstream o, e;
+  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+  EXPECT_TRUE(std::filesystem::exists(out));
+  // The same block declaring one byte more than its records is refused.
+  block[block.size() - records.size() - 1] = char(records.size() + 1);
+  std::string bad = jpeg.substr(0, 2) + std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) + block +
+                    jpeg.substr(2);
+  std::string bad_path = write_file("bad_iptc.jpg", bad);
+  Outcome r = render_expecting_failure("bad_iptc", write_scene("bad_iptc", textured_scene(bad_path)));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(bad_path + ": the JPEG's IPTC block (APP13) declares " + std::to_string(records.size() + 1) +
+                       " bytes of records, but its marker holds " + std::to_string(records.size())),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace facet::runtime
