@@ -84,6 +84,7 @@ std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_
   const bool multi_part = (*version & kMultiPart) != 0;
   for (int part = 0;; ++part) {
     int attributes = 0;
+    bool data_window = false;
     for (;; ++attributes) {
       std::optional<std::string> name = read_name(file, max_name);
       if (!name) {
@@ -103,13 +104,19 @@ std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_
       }
       if (*name == "dataWindow" && *type == "box2i" && declared == 16) {
         if (std::optional<std::string> problem = data_window_problem(file, limits)) return problem;
+        data_window = true;
         continue;
       }
       file.seekg(declared, std::ios::cur);
     }
     // A single-part header ends at its first empty name; a multi-part file's
     // list of headers ends with an empty header.
-    if (!multi_part || attributes == 0) return std::nullopt;
+    if (multi_part && attributes == 0) return std::nullopt;
+    // Every header has a dataWindow. Without one where this walk finds it,
+    // OpenEXR read the header otherwise (fuzz_image: a file whose dataWindow
+    // only OpenEXR found, 50 million pixels wide), so its size is unchecked.
+    if (!data_window) return fmt::format("the EXR header of part {} has no dataWindow (box2i) attribute", part);
+    if (!multi_part) return std::nullopt;
   }
 }
 

@@ -20,9 +20,11 @@ bool is_exr(std::istream& file);
 // Why the EXR header in `file` (of `file_size` bytes, read from its start)
 // cannot be right, or nullopt when every attribute of every part's header
 // fits in the file: a negative size, a value running past the end, a name
-// without its terminating NUL within OpenEXR's length limit, or a
+// without its terminating NUL within OpenEXR's length limit, a
 // dataWindow that is empty or larger than `limits` (OpenEXR allocates for
-// the data window when the file opens, before any pixel is read).
+// the data window when the file opens, before any pixel is read), or a
+// header where this walk finds no dataWindow (every header has one: OpenEXR
+// read such a header otherwise, and its data window went unchecked).
 std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size, const ImageLimits& limits);
 
 // The same for a BMP's declared size (OpenImageIO decodes RLE-compressed
