@@ -24,7 +24,7 @@
 # with an open finding, so that a smoke run stays a regression check).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${FACET_FUZZ_BUILD_DIR:-$root/build-fuzz}
+build=$(realpath -m "${FACET_FUZZ_BUILD_DIR:-$root/build-fuzz}")  # absolute: workers run in their log folder
 jobs=${FACET_FUZZ_JOBS:-$(nproc)}
 all_targets=(shaderlab frontend hlsl package cache scene obj gltf image)
 

@@ -268,6 +268,9 @@ std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArg
   if ((!raw.material_files.empty() || !raw.strip_files.empty() || !raw.variant_files.empty()) && !strips) {
     return "--materials, --strip and --variants apply to packages, --report, --estimate and --check";
   }
+  if (!raw.variant_files.empty() && !raw.passes.empty()) {
+    return "--variants chooses the passes to build; give no --pass with it";
+  }
   if (!raw.emit_strip.empty() && args.mode != Mode::report) return "--emit-strip goes with --report";
   if (!raw.emit_strip.empty() && !args.output.empty() && same_path(raw.emit_strip, args.output)) {
     return "--emit-strip and -o name the same file";

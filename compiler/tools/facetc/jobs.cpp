@@ -97,7 +97,6 @@ Result<std::string> emit_jobs(const FacetcArgs& args, const Compiler& compiler, 
   final_argv.insert(final_argv.end(), args.compile_flags.begin(), args.compile_flags.end());
   for (const std::string& f : args.strip_files) final_argv.insert(final_argv.end(), {"--strip", f});
   for (const std::string& f : args.material_files) final_argv.insert(final_argv.end(), {"--materials", f});
-  for (const std::string& f : args.variant_files) final_argv.insert(final_argv.end(), {"--variants", f});
   final_argv.insert(final_argv.end(), {"-o", package, "-MD"});
 
   if (args.jobs_format == JobsFormat::json) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -10,20 +11,22 @@ namespace facet::runtime {
 namespace {
 
 constexpr uint8_t kApp13 = 0xED;
-constexpr uint8_t kStartOfScan = 0xDA;
 constexpr uint8_t kEndOfImage = 0xD9;
 
 size_t big_endian16(const uint8_t* p) { return size_t(p[0]) << 8 | p[1]; }
 
-// The IPTC records of an APP13 marker's data as OpenImageIO reads them:
-// "Photoshop 3.0\0", "8BIM", resource 0x0404, 4 bytes, a 2-byte size, then
-// records of 0x1C, record, dataset, a 2-byte length and the data, for as long
-// as the size lasts and the next byte is 0x1C.
+// The IPTC block of an APP13 marker's data as OpenImageIO 2.4 reads it
+// (jpeg_decode_iptc): "Photoshop 3.0\0" compared with strcmp, "8BIM",
+// resource 0x0404, 4 bytes, then a 2-byte size of the records that follow,
+// which it reads without comparing with the marker's length. (Each record's
+// own length is clamped to that size, so the size is what must fit.)
 std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
-  static constexpr char kPhotoshop[] = "Photoshop 3.0";
+  static constexpr char kPhotoshop[] = "Photoshop 3.0";  // and its NUL: 14 bytes
   constexpr size_t kHeader = sizeof(kPhotoshop) + 4 + 2 + 4 + 2;  // 26: the records start here
-  if (data.size() < sizeof(kPhotoshop) || std::memcmp(data.data(), kPhotoshop, sizeof(kPhotoshop)) != 0) {
-    return std::nullopt;  // not Photoshop's block: OpenImageIO skips it
+  const size_t compared = std::min(data.size(), sizeof(kPhotoshop));
+  if (std::memcmp(data.data(), kPhotoshop, compared) != 0) return std::nullopt;  // strcmp stops inside the data
+  if (data.size() < sizeof(kPhotoshop)) {
+    return fmt::format("the JPEG's APP13 marker holds {} bytes of \"Photoshop 3.0\" without its end", data.size());
   }
   if (data.size() < kHeader) {
     return fmt::format("the JPEG's IPTC block (APP13) ends at byte {} of its {}-byte header", data.size(), kHeader);
@@ -36,51 +39,43 @@ std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
     return fmt::format("the JPEG's IPTC block (APP13) declares {} bytes of records, but its marker holds {}", declared,
                        available);
   }
-  const uint8_t* record = data.data() + kHeader;
-  size_t left = declared;
-  while (left > 0 && record[0] == 0x1C) {
-    if (left < 5) return fmt::format("the JPEG's IPTC block (APP13) ends inside a record's 5-byte header");
-    const size_t length = big_endian16(record + 3);
-    if (length > left - 5) {
-      return fmt::format("an IPTC record of the JPEG (APP13) declares {} bytes, but {} are left in its block", length,
-                         left - 5);
-    }
-    record += 5 + length;
-    left -= 5 + length;
-  }
   return std::nullopt;
 }
 
 }  // namespace
 
 // The markers are read as libjpeg reads them: bytes before a marker's 0xFF
-// are skipped (with a warning), a length below 2 holds no data, and a file
-// that ends inside a marker is padded with end-of-image markers.
+// are skipped (scan data, or garbage with a warning), a length below 2 holds
+// no data, and a file that ends inside a marker is padded with end-of-image
+// markers. Markers after the first scan count too: for a progressive or
+// multi-scan file, libjpeg reads the whole file before OpenImageIO looks at
+// the saved markers.
 std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
   uint8_t soi[2] = {};
   if (!file.read(reinterpret_cast<char*>(soi), 2) || soi[0] != 0xFF || soi[1] != 0xD8) return std::nullopt;
   for (;;) {
     int marker = 0;
-    while (marker == 0) {  // 0xFF 0x00 is a stuffed byte, not a marker
+    while (marker == 0) {  // 0xFF 0x00 is a stuffed byte of scan data, not a marker
       int byte = file.get();
       while (byte != EOF && byte != 0xFF) byte = file.get();
       while (byte == 0xFF) byte = file.get();
       if (byte == EOF) return std::nullopt;
       marker = byte;
     }
-    if (marker == kStartOfScan || marker == kEndOfImage) return std::nullopt;
+    if (marker == kEndOfImage) return std::nullopt;
     if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) continue;  // markers without a length
     uint8_t size[2] = {};
     if (!file.read(reinterpret_cast<char*>(size), 2)) return std::nullopt;
     const size_t length = big_endian16(size);
     if (length < 2) continue;
-    if (marker != kApp13) {
+    if (marker != kApp13) {  // the start of scan's header too; its data follows it
       file.seekg(std::streamoff(length - 2), std::ios::cur);
       continue;
     }
     std::vector<uint8_t> data(length - 2);  // at most 65533 bytes
     file.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size()));
-    for (size_t i = size_t(file.gcount()); i < data.size(); ++i) data[i] = i % 2 == 0 ? 0xFF : kEndOfImage;
+    const size_t read = size_t(file.gcount());
+    for (size_t i = read; i < data.size(); ++i) data[i] = (i - read) % 2 == 0 ? 0xFF : kEndOfImage;
     if (std::optional<std::string> problem = iptc_problem(data)) return problem;
     if (!file) return std::nullopt;
   }

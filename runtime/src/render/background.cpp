@@ -20,7 +20,7 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
   source.name = "procedural sky";
   source.json_path = "camera.clear";
   source.mesh = "quad";
-  if (!library.compiler()) {
+  if (!library.compiler() || library.compiler()->stdlib_dir.empty()) {
     return unexpected(RenderError{fmt::format(
         "{}: camera.clear: the procedural sky is the stdlib's ProceduralSky.shader, which needs the development "
         "layer (facet_shader_compiler); this renderer draws packages only",

@@ -43,14 +43,9 @@ Result<void, RenderError> texel_sizes(Material& material, Resources& resources, 
 
 DrawRecord step_record(const PostChain& chain, size_t i, size_t pass_index) {
   const ObjectState& s = chain.steps[i];
-  const SelectedPass& pass = s.shader->passes[pass_index];
-  DrawRecord r;
+  DrawRecord r = pass_record(s, pass_index);
   r.object = fmt::format("{} (image effect)", s.scene->json_path);
   r.object_index = i;
-  r.shader = s.shader->shader.name;
-  r.pass = pass.ir.name.empty() ? std::to_string(pass.pass) : fmt::format("{} {}", pass.pass, pass.ir.name);
-  r.light_mode = pass.ir.tag("LightMode");
-  r.queue = s.queue;
   r.why = fmt::format("image effect step {}: the {} image bound as _MainTex", i + 1,
                       i == 0 ? "camera's" : "previous step's");
   return r;

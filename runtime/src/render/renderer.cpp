@@ -688,8 +688,9 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     return unexpected(error("cannot create the framebuffer"));
   }
   VkPipelineCacheCreateInfo cache_info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
-  if (vkCreatePipelineCache(context.device(), &cache_info, nullptr, &fo.cache) != VK_SUCCESS) {
-    return unexpected(error("cannot create the pipeline cache"));
+  if (VkResult r = vkCreatePipelineCache(context.device(), &cache_info, nullptr, &fo.cache); r != VK_SUCCESS) {
+    fo.cache = VK_NULL_HANDLE;  // undefined after a failure; the frame's objects destroy what is not null
+    return unexpected(error(fmt::format("cannot create the pipeline cache (VkResult {})", int(r))));
   }
   std::vector<VkPipeline> pipelines;
   for (const Draw& d : list->draws) {

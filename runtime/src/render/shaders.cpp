@@ -65,7 +65,7 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
     shaders_[path] = std::move(asset);
     return raw;
   }
-  if (!compiler_) {
+  if (!compiler_ || !compiler_->load || !compiler_->compile) {
     return unexpected(fmt::format("{}: a .shader needs the development layer (facet_shader_compiler) to compile its "
                                   "variants; this renderer draws packages only: build it with `facetc {} -o NAME.facetpkg` "
                                   "and name the package in the scene",

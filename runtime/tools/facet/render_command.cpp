@@ -86,6 +86,18 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << *clash << "\n";
     return 1;
   }
+  if (!a.variants.empty()) {
+    // A package's passes are numbered in the package, which skips what the
+    // build left out: only a .shader gives the SubShader's indices facetc reads.
+    for (const runtime::SceneInput& input : runtime::scene_inputs(a.scene, *scene)) {
+      if (input.what == "a shader of the scene" && input.path.ends_with(".facetpkg")) {
+        err << fmt::format("facet render: error: --emit-variants needs the scene's .shader files, not the package "
+                           "'{}' (a package's pass numbers are not its SubShader's); nothing was written\n",
+                           input.path);
+        return 1;
+      }
+    }
+  }
   auto context = runtime::create_context({.device = a.device, .validation = a.validation});
   if (!context) {
     err << "facet render: " << runtime::describe(context.error()) << "\n";

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <tuple>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -388,10 +389,14 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
 // exception: the process ended); EXR files whose dataWindow is 50 million
 // pixels wide made OpenEXR allocate and free for over 30 s under ASan.
 // Both headers are checked before OpenImageIO opens the file. On 2026-12-06
-// it found JPEGs whose Photoshop IPTC block (APP13) declares more bytes than
-// its marker holds, or a record longer than the block: OpenImageIO 2.4 reads
-// past the marker's data while opening them (ASan: heap-buffer-overflow in
-// decode_iptc_iim); the block is checked first too (jpeg_header.h).
+// it found JPEGs whose Photoshop IPTC block (APP13) declares more bytes of
+// records than its marker holds (in the second file, its third APP13 block):
+// OpenImageIO 2.4 reads past the marker's data while opening them (ASan:
+// heap-buffer-overflow in decode_iptc_iim); the blocks are checked first too
+// (jpeg_header.h). The same run reported EXR files that took 26-28 s under
+// ASan: OpenEXR found a 50-million-pixel-wide dataWindow where the header
+// walk found none, and allocated 1.6 GB for it; a header without a
+// dataWindow the walk can read is now refused.
 struct FuzzFoundImage {
   const char* file;
   const char* expected;
@@ -416,12 +421,14 @@ INSTANTIATE_TEST_SUITE_P(
                       FuzzFoundImage{"bmp-rle-tall-2.bmp", "the BMP header: "},
                       FuzzFoundImage{"exr-data-window-50331655-wide.exr", "the EXR dataWindow: the image is "},
                       FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "},
+                      FuzzFoundImage{"exr-data-window-only-openexr-finds.exr",
+                                     "the EXR header of part 0 has no dataWindow (box2i) attribute"},
                       FuzzFoundImage{"jpeg-iptc-past-its-marker.jpg",
                                      "the JPEG's IPTC block (APP13) declares 28761 bytes of records, but its marker "
                                      "holds 89"},
-                      FuzzFoundImage{"jpeg-iptc-record-past-its-block.jpg",
-                                     "an IPTC record of the JPEG (APP13) declares 23879 bytes, but 84 are left in its "
-                                     "block"}),
+                      FuzzFoundImage{"jpeg-iptc-third-block-past-its-marker.jpg",
+                                     "the JPEG's IPTC block (APP13) declares 217 bytes of records, but its marker "
+                                     "holds 89"}),
     [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
 
 // A texture is read by the reader its extension names, never by every
@@ -495,6 +502,23 @@ TEST(JpegIptcControl, AJpegWithAWellFormedIptcBlockRenders) {
                        " bytes of records, but its marker holds " + std::to_string(records.size())),
             std::string::npos)
       << r.err;
+  // After the scan too (libjpeg reads a progressive file's later markers
+  // before OpenImageIO looks at them), and a marker holding "Photoshop 3.0"
+  // without its NUL (OpenImageIO's strcmp would read past it).
+  const size_t eoi = jpeg.rfind(std::string("\xff\xd9", 2));
+  ASSERT_NE(eoi, std::string::npos);
+  std::string late = jpeg.substr(0, eoi) + std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) +
+                     block + jpeg.substr(eoi);
+  std::string unended = jpeg.substr(0, 2) + std::string("\xff\xed\x00\x0f", 4) + "Photoshop 3.0" + jpeg.substr(2);
+  for (const auto& [name, bytes, expected] :
+       {std::tuple{"late_iptc", late, std::string("declares ") + std::to_string(records.size() + 1) + " bytes"},
+        std::tuple{"unended_iptc", unended, std::string("holds 13 bytes of \"Photoshop 3.0\" without its end")}}) {
+    std::string file = write_file(std::string(name) + ".jpg", bytes);
+    Outcome refused = render_expecting_failure(name, write_scene(name, textured_scene(file)));
+    EXPECT_EQ(refused.code, 1) << name;
+    EXPECT_NE(refused.err.find(file + ": the JPEG's "), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find(expected), std::string::npos) << refused.err;
+  }
 }
 
 }  // namespace

@@ -224,6 +224,37 @@ TEST_F(FacetRenderPackageTest, BadVariantCollectionsAreLocatedErrors) {
   }
 }
 
+TEST_F(FacetRenderPackageTest, EmittedVariantsNameImageEffectPassesByTheirIndex) {
+  fs::path scene = fs::path(FACET_SOURCE_DIR) / "examples/scenes/post_chain.json";
+  FacetcRun run = facet_render({scene.string(), "-o", "post.png", "--emit-variants", "post.json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  VariantPairs effects = collected_variants(nlohmann::json::parse(read_all(dir_ / "post.json")),
+                                            "Hidden/Examples/ImageEffects");
+  EXPECT_EQ(effects, (VariantPairs{{"GREYSCALE", {}}, {"BLUR", {}}}));
+  for (const auto& s : nlohmann::json::parse(read_all(dir_ / "post.json"))["shaders"]) {
+    if (s["shader"] != "Hidden/Examples/ImageEffects") continue;
+    for (const auto& pass : s["passes"]) EXPECT_EQ(pass["pass"], pass["name"] == "GREYSCALE" ? 0 : 1);
+  }
+}
+
+TEST_F(FacetRenderPackageTest, EmittingVariantsNeedsTheScenesShaderFiles) {
+  build_package("Diffuse.shader", "Diffuse.facetpkg");
+  write_scene("mixed.json", "Diffuse.facetpkg", example("PhongMultiLight.shader"));
+  FacetcRun run = facet_render({"mixed.json", "-o", "mixed.png", "--emit-variants", "mixed.variants.json"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("--emit-variants needs the scene's .shader files, not the package 'Diffuse.facetpkg'"));
+  EXPECT_FALSE(fs::exists(dir_ / "mixed.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "mixed.variants.json"));
+}
+
+TEST_F(FacetRenderPackageTest, VariantsAndPassAreNotGivenTogether) {
+  write_all(dir_ / "variants.json", R"({"shaders": [{"shader": "Examples/Diffuse", "passes": []}]})");
+  FacetcRun run = facetc({example("Diffuse.shader"), "--variants", "variants.json", "--pass", "0", "-o", "d.facetpkg"});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_THAT(run.err, HasSubstr("--variants chooses the passes to build; give no --pass with it"));
+  EXPECT_FALSE(fs::exists(dir_ / "d.facetpkg"));
+}
+
 #ifdef FACET_PLAY_PATH
 // facet-play is the runtime alone (facet_render, no compiler): it draws
 // packages and links nothing that compiles shaders.

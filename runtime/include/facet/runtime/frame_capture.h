@@ -6,7 +6,7 @@
 // facet's per-frame work costs against a bare Vulkan loop).
 //
 //   runtime::FrameCapture capture;
-//   auto frame = runtime::render_scene(*context, *scene, {.capture = &capture});
+//   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler(), .capture = &capture});
 #pragma once
 
 #include <vulkan/vulkan.h>
