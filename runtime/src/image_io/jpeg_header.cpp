@@ -23,6 +23,9 @@ size_t big_endian16(const uint8_t* p) { return size_t(p[0]) << 8 | p[1]; }
 std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
   static constexpr char kPhotoshop[] = "Photoshop 3.0";  // and its NUL: 14 bytes
   constexpr size_t kHeader = sizeof(kPhotoshop) + 4 + 2 + 4 + 2;  // 26: the records start here
+  // An empty marker is a prefix of every text: OpenImageIO's strcmp reads
+  // past it at once.
+  if (data.empty()) return std::string("the JPEG has an empty APP13 marker");
   const size_t compared = std::min(data.size(), sizeof(kPhotoshop));
   if (std::memcmp(data.data(), kPhotoshop, compared) != 0) return std::nullopt;  // strcmp stops inside the data
   if (data.size() < sizeof(kPhotoshop)) {
@@ -46,8 +49,8 @@ std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
 
 // The markers are read as libjpeg reads them: bytes before a marker's 0xFF
 // are skipped (scan data, or garbage with a warning), a length below 2 holds
-// no data, and a file that ends inside a marker is padded with end-of-image
-// markers. Markers after the first scan count too: for a progressive or
+// no data (the marker is still kept), and a file that ends inside a marker
+// is padded with end-of-image markers. Markers after the first scan count too: for a progressive or
 // multi-scan file, libjpeg reads the whole file before OpenImageIO looks at
 // the saved markers.
 std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
@@ -66,8 +69,7 @@ std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
     if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) continue;  // markers without a length
     uint8_t size[2] = {};
     if (!file.read(reinterpret_cast<char*>(size), 2)) return std::nullopt;
-    const size_t length = big_endian16(size);
-    if (length < 2) continue;
+    const size_t length = std::max<size_t>(big_endian16(size), 2);  // libjpeg: a length below 2 holds no data
     if (marker != kApp13) {  // the start of scan's header too; its data follows it
       file.seekg(std::streamoff(length - 2), std::ios::cur);
       continue;
