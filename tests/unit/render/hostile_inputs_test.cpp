@@ -434,6 +434,22 @@ INSTANTIATE_TEST_SUITE_P(
                                      "holds 89"}),
     [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
 
+// `facet render` of a one-quad scene textured with `image` succeeds and writes its PNG.
+void expect_textured_render(const std::string& name, const std::string& image) {
+  std::string out = (test_dir() / (name + ".out.png")).string();
+  std::string scene = write_scene(name, textured_scene(image));
+  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
+  std::ostringstream o, e;
+  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+  EXPECT_TRUE(std::filesystem::exists(out)) << name;
+}
+
+// A JPEG APP13 marker holding `data`.
+std::string app13(const std::string& data) {
+  size_t length = data.size() + 2;
+  return std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) + data;
+}
+
 // A texture is read by the reader its extension names, never by every
 // reader OpenImageIO has (camera RAW, JPEG 2000, DICOM, ...) in turn: a
 // valid PNG named .tga is a Targa error, and the same bytes named .png
@@ -445,12 +461,7 @@ TEST(TextureFormatByName, APngNamedTgaIsATargaErrorAndRendersNamedPng) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("_MainTex: " + tga + ": cannot read the image as targa ("), std::string::npos) << r.err;
 
-  std::string png = write_file("png_named.png", bytes);
-  std::string out = (test_dir() / "png_named.out.png").string();
-  std::string scene = write_scene("png_named_png", textured_scene(png));
-  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
-  std::ostringstream o, e;
-  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
+  expect_textured_render("png_named_png", write_file("png_named.png", bytes));
 }
 
 TEST(TextureFormatByName, AnExtensionNoReaderKnowsIsAnErrorNamingIt) {
@@ -464,13 +475,7 @@ TEST(TextureFormatByName, AnExtensionNoReaderKnowsIsAnErrorNamingIt) {
 // The negative control: the real file renders, so the header walk passes
 // what OpenEXR writes and the cases above fail for their attribute alone.
 TEST(HostileExrControl, TheRealExrRenders) {
-  std::string exr = write_file("fits.exr", small_exr_bytes());
-  std::string out = (test_dir() / "fits.out.png").string();
-  std::string scene = write_scene("fits", textured_scene(exr));
-  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
-  std::ostringstream o, e;
-  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
-  EXPECT_TRUE(std::filesystem::exists(out));
+  expect_textured_render("fits", write_file("fits.exr", small_exr_bytes()));
 }
 
 // The control of the JPEG IPTC check: a real JPEG (tests/fuzz/corpus/image/
@@ -484,20 +489,10 @@ TEST(JpegIptcControl, AJpegWithAWellFormedIptcBlockRenders) {
   std::string records = std::string("\x1c\x02\x78", 3) + char(0) + char(caption.size()) + caption;
   std::string block = std::string("Photoshop 3.0", 14) + "8BIM" + std::string("\x04\x04", 2) + std::string(4, '\0') +
                       char(records.size() >> 8) + char(records.size() & 0xff) + records;
-  size_t length = block.size() + 2;
-  std::string app13 = std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) + block;
-  std::string with_iptc = jpeg.substr(0, 2) + app13 + jpeg.substr(2);
-  std::string path = write_file("with_iptc.jpg", with_iptc);
-  std::string out = (test_dir() / "with_iptc.out.png").string();
-  std::string scene = write_scene("with_iptc", textured_scene(path));
-  std::vector<const char*> argv = {"render", scene.c_str(), "-o", out.c_str()};
-  std::ostringstream o, e;
-  EXPECT_EQ(tool::render_command(int(argv.size()), argv.data(), o, e), 0) << e.str();
-  EXPECT_TRUE(std::filesystem::exists(out));
+  expect_textured_render("with_iptc", write_file("with_iptc.jpg", jpeg.substr(0, 2) + app13(block) + jpeg.substr(2)));
   // The same block declaring one byte more than its records is refused.
   block[block.size() - records.size() - 1] = char(records.size() + 1);
-  std::string bad = jpeg.substr(0, 2) + std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) + block +
-                    jpeg.substr(2);
+  std::string bad = jpeg.substr(0, 2) + app13(block) + jpeg.substr(2);
   std::string bad_path = write_file("bad_iptc.jpg", bad);
   Outcome r = render_expecting_failure("bad_iptc", write_scene("bad_iptc", textured_scene(bad_path)));
   EXPECT_EQ(r.code, 1);
@@ -510,9 +505,8 @@ TEST(JpegIptcControl, AJpegWithAWellFormedIptcBlockRenders) {
   // without its NUL (OpenImageIO's strcmp would read past it).
   const size_t eoi = jpeg.rfind(std::string("\xff\xd9", 2));
   ASSERT_NE(eoi, std::string::npos);
-  std::string late = jpeg.substr(0, eoi) + std::string("\xff\xed", 2) + char(length >> 8) + char(length & 0xff) +
-                     block + jpeg.substr(eoi);
-  std::string unended = jpeg.substr(0, 2) + std::string("\xff\xed\x00\x0f", 4) + "Photoshop 3.0" + jpeg.substr(2);
+  std::string late = jpeg.substr(0, eoi) + app13(block) + jpeg.substr(eoi);
+  std::string unended = jpeg.substr(0, 2) + app13("Photoshop 3.0") + jpeg.substr(2);
   for (const auto& [name, bytes, expected] :
        {std::tuple{"late_iptc", late, std::string("declares ") + std::to_string(records.size() + 1) + " bytes"},
         std::tuple{"unended_iptc", unended, std::string("holds 13 bytes of \"Photoshop 3.0\" without its end")}}) {
