@@ -228,10 +228,10 @@ TEST_F(FacetRenderPackageTest, EmittedVariantsNameImageEffectPassesByTheirIndex)
   fs::path scene = fs::path(FACET_SOURCE_DIR) / "examples/scenes/post_chain.json";
   FacetcRun run = facet_render({scene.string(), "-o", "post.png", "--emit-variants", "post.json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  VariantPairs effects = collected_variants(nlohmann::json::parse(read_all(dir_ / "post.json")),
-                                            "Hidden/Examples/ImageEffects");
+  const nlohmann::json collection = nlohmann::json::parse(read_all(dir_ / "post.json"));
+  VariantPairs effects = collected_variants(collection, "Hidden/Examples/ImageEffects");
   EXPECT_EQ(effects, (VariantPairs{{"GREYSCALE", {}}, {"BLUR", {}}}));
-  for (const auto& s : nlohmann::json::parse(read_all(dir_ / "post.json"))["shaders"]) {
+  for (const auto& s : collection.at("shaders")) {
     if (s["shader"] != "Hidden/Examples/ImageEffects") continue;
     for (const auto& pass : s["passes"]) EXPECT_EQ(pass["pass"], pass["name"] == "GREYSCALE" ? 0 : 1);
   }
