@@ -48,6 +48,12 @@ else
   usage
 fi
 
+# LeakSanitizer matches tests/fuzz/lsan.supp by function name, which needs a
+# symbolizer: without one, OpenImageIO's known leak is reported at exit.
+if [[ -z ${ASAN_SYMBOLIZER_PATH:-} ]] && ! command -v llvm-symbolizer >/dev/null && ! command -v addr2line >/dev/null; then
+  echo "$0: warning: no llvm-symbolizer or addr2line on PATH (or ASAN_SYMBOLIZER_PATH): leak suppressions cannot match" >&2
+fi
+
 configure() {
   if [[ -f $build/CMakeCache.txt ]] && grep -q '^FACET_FUZZ:BOOL=ON' "$build/CMakeCache.txt"; then
     return
@@ -104,7 +110,10 @@ run_target() {
   if [[ $workers -gt 1 ]]; then
     logs=("$jobs_dir"/fuzz-*.log)
     # Each worker's final statistics: executions add up, coverage is the largest.
-    runs=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: *//p' | awk '{s += $1} END {print s + 0}')
+    # A worker that reports something prints its statistics again after the
+    # report: only the last block of each log counts.
+    runs=$(for l in "${logs[@]}"; do sed -n 's/^stat::number_of_executed_units: *//p' "$l" | tail -1; done |
+      awk '{s += $1} END {print s + 0}')
     rate=$((runs / (seconds > 0 ? seconds : 1)))
     cov=$(cat "${logs[@]}" | sed -nE 's/^#[0-9]+.* cov: ([0-9]+).*/\1/p' | sort -n | tail -1)
     corp="$(find "$scratch" -type f | wc -l)_inputs"

@@ -9,6 +9,7 @@
 
 #include "image_io/exr_header.h"
 #include "image_io/jpeg_header.h"
+#include "image_io/png_header.h"
 #include "image_io/image_io.h"
 
 namespace facet::runtime {
@@ -22,22 +23,26 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
   return {};
 }
 
-// OpenEXR trusts its header's sizes, OpenImageIO decodes RLE BMPs and a
-// JPEG's IPTC block while opening them (exr_header.h, jpeg_header.h): those
-// headers are checked first; other formats go to OpenImageIO as they are.
+// OpenEXR and libpng trust their headers' sizes, OpenImageIO decodes RLE
+// BMPs and a JPEG's IPTC block while opening them (exr_header.h,
+// png_header.h, jpeg_header.h): those headers are checked first; other
+// formats go to OpenImageIO as they are.
 std::optional<std::string> header_problem(const std::string& path, const ImageLimits& limits) {
   std::ifstream file(path, std::ios::binary);
   if (!file) return std::nullopt;
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return std::nullopt;
   if (std::optional<std::string> problem = bmp_header_problem(file, limits)) return problem;
   file.clear();
   file.seekg(0);
   if (std::optional<std::string> problem = jpeg_iptc_problem(file)) return problem;
   file.clear();
   file.seekg(0);
+  if (std::optional<std::string> problem = png_chunk_problem(file, size)) return problem;
+  file.clear();
+  file.seekg(0);
   if (!is_exr(file)) return std::nullopt;
-  std::error_code error;
-  const uintmax_t size = std::filesystem::file_size(path, error);
-  if (error) return std::nullopt;
   file.seekg(0);
   return exr_header_problem(file, size, limits);
 }

@@ -3,9 +3,11 @@
 #include <png.h>
 
 #include <filesystem>
+#include <fstream>
 #include <new>
 
 #include "image_io/image_io.h"
+#include "image_io/png_header.h"
 
 namespace facet::runtime {
 namespace {
@@ -19,6 +21,11 @@ bool is_png(const std::string& path) {
 }  // namespace
 
 Result<DecodedImage, std::string> read_image_file(const std::string& path, const ImageLimits& limits) {
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  if (std::ifstream file(path, std::ios::binary); file && !error) {
+    if (std::optional<std::string> problem = png_chunk_problem(file, size)) return unexpected(*problem);
+  }
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str())) {

@@ -108,9 +108,19 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
   if (asset.package && !pick->exact) {
     std::vector<std::string> asked = object.material.keywords;
     asked.insert(asked.end(), global.begin(), global.end());
-    library.record_miss(fmt::format("{}: pass {}: no variant for {{{}}}; drawn with Unity's closest match {{{}}}",
-                                    asset.path, record.pass, fmt::join(asked, " "),
-                                    fmt::join(variants::all_keywords(pass.keywords, pick->key), " ")));
+    std::string miss = fmt::format("{}: pass {}: no variant for {{{}}}", asset.path, record.pass, fmt::join(asked, " "));
+    std::string no_source;
+    if (const std::string* source = library.on_demand_source(asset, no_source)) {
+      // The exact variant, compiled from the .shader the package was built from.
+      pick = variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
+      if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+      library.record_miss(fmt::format("{}; compiled on demand from {}", miss, *source));
+      record.why += fmt::format("; compiled on demand from {} (the package lacks the variant)", *source);
+    } else {
+      library.record_miss(fmt::format("{}; drawn with Unity's closest match {{{}}}{}", miss,
+                                      fmt::join(variants::all_keywords(pass.keywords, pick->key), " "),
+                                      no_source.empty() ? "" : " (" + no_source + ")"));
+    }
   }
   bool compiled = false;
   Result<LoadedVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <map>
+#include <optional>
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/gltf.h"
@@ -609,7 +610,22 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (options.capture && !scene.post.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
-  ShaderLibrary library(options.shader_compiler);
+  std::optional<ShaderLibrary> own_library;
+  ShaderLibrary* kept = nullptr;
+  uint64_t reloaded = 0;
+  if (options.shaders) {
+    ShaderStore& store = *options.shaders;
+    if (store.context && store.context != &context) {
+      return unexpected(error("the ShaderStore holds GPU programs of another Context: give each Context its own"));
+    }
+    store.context = &context;
+    if (!store.library) store.library = std::make_unique<ShaderLibrary>(options.shader_compiler);
+    kept = store.library.get();
+    kept->set_compiler(options.shader_compiler);
+    reloaded = kept->forget_changed();
+  }
+  ShaderLibrary& library = kept ? *kept : own_library.emplace(options.shader_compiler);
+  library.begin_render();
   library.set_strict_variants(options.strict_variants);
   Resources resources(context);
   resources.keep_pixels(options.capture != nullptr);
@@ -894,6 +910,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     for (DrawRecord& r : map->casters.skipped) frame.draws.push_back(std::move(r));
   }
   frame.stats.shaders_loaded = library.loaded();
+  frame.stats.shaders_reloaded = reloaded;
   frame.shader_files = library.files_read();
   frame.variant_misses = library.misses();
   frame.stats.textures_loaded = resources.textures_loaded();

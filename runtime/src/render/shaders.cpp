@@ -55,7 +55,8 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   Timer timer{seconds_};
   auto asset = std::make_unique<ShaderAsset>();
   asset->path = path;
-  asset->files_read.insert(path);
+  ++loads_;
+  note_read(*asset, path);
   Diagnostics diags;
   if (is_package_path(path)) {
     Result<package::Package> pkg = read_package_file(path, diags);
@@ -82,6 +83,39 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   return raw;
 }
 
+FileStamp stamp_of(const std::string& path) {
+  std::error_code ec;
+  FileStamp stamp;
+  stamp.time = std::filesystem::last_write_time(path, ec);
+  if (ec) return {};
+  stamp.size = std::filesystem::file_size(path, ec);
+  if (ec) return {};
+  stamp.exists = true;
+  return stamp;
+}
+
+void ShaderLibrary::note_read(ShaderAsset& asset, const std::string& path) {
+  if (asset.files_read.insert(path).second) asset.stamps[path] = stamp_of(path);
+}
+
+size_t ShaderLibrary::forget_changed() {
+  size_t forgotten = 0;
+  for (auto it = shaders_.begin(); it != shaders_.end();) {
+    const std::map<std::string, FileStamp>& stamps = it->second->stamps;
+    bool changed = std::any_of(stamps.begin(), stamps.end(),
+                               [](const auto& file) { return stamp_of(file.first) != file.second; });
+    if (changed) {
+      it = shaders_.erase(it);
+      ++forgotten;
+    } else {
+      ++it;
+    }
+  }
+  return forgotten;
+}
+
+std::shared_ptr<ShaderStore> make_shader_store() { return std::make_shared<ShaderStore>(); }
+
 std::vector<std::string> ShaderLibrary::files_read() const {
   std::set<std::string> all;
   for (const auto& [path, asset] : shaders_) all.insert(asset->files_read.begin(), asset->files_read.end());
@@ -91,17 +125,25 @@ std::vector<std::string> ShaderLibrary::files_read() const {
 Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                              const variants::VariantKey& key, bool* compiled) {
   auto id = std::make_pair(pass, key);
-  if (auto it = asset.variants.find(id); it != asset.variants.end()) {
-    *compiled = false;
-    return it->second.get();
-  }
+  *compiled = false;
+  if (auto it = asset.variants.find(id); it != asset.variants.end()) return it->second.get();
   Timer timer{seconds_};
-  if (asset.package) return packaged_variant(context, asset, pass, key, compiled);
-  const size_t selected_pass = asset.passes[pass].pass;
-  Result<CompiledPassVariant, std::string> out = compiler_->compile(
-      asset.shader, asset.sources, selected_pass, variants::all_keywords(asset.passes[pass].keywords, key));
+  Result<std::unique_ptr<LoadedVariant>, std::string> variant =
+      asset.package ? packaged_variant(context, asset, pass, key, compiled)
+                    : compiled_variant(context, asset, asset.shader, asset.sources, asset.passes[pass].pass,
+                                       variants::all_keywords(asset.passes[pass].keywords, key), compiled);
+  if (!variant) return unexpected(variant.error());
+  LoadedVariant* raw = variant->get();
+  asset.variants[id] = std::move(*variant);
+  return raw;
+}
+
+Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::compiled_variant(
+    const Context& context, ShaderAsset& asset, const ir::Shader& shader, SourceMap& sources, size_t selected_pass,
+    const std::vector<std::string>& keywords, bool* compiled) {
+  Result<CompiledPassVariant, std::string> out = compiler_->compile(shader, sources, selected_pass, keywords);
   if (!out) return unexpected(out.error());
-  asset.files_read.insert(out->files_read.begin(), out->files_read.end());
+  for (const std::string& file : out->files_read) note_read(asset, file);
   auto variant = std::make_unique<LoadedVariant>();
   variant->package = std::move(out->package);
   if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {
@@ -112,30 +154,84 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, variant->package, v);
   if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected_pass, program.error()));
   variant->program = std::move(*program);
-  LoadedVariant* raw = variant.get();
-  asset.variants[id] = std::move(variant);
   *compiled = true;
-  return raw;
+  return variant;
 }
 
-Result<LoadedVariant*, std::string> ShaderLibrary::packaged_variant(const Context& context, ShaderAsset& asset,
-                                                                     size_t pass, const variants::VariantKey& key,
-                                                                     bool* compiled) {
+Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::packaged_variant(const Context& context,
+                                                                                    ShaderAsset& asset, size_t pass,
+                                                                                    const variants::VariantKey& key,
+                                                                                    bool* compiled) {
   const std::vector<package::PackageVariant>& built = asset.package->passes[pass].variants;
   auto found = std::find_if(built.begin(), built.end(), [&](const package::PackageVariant& v) { return v.key == key; });
-  if (found == built.end()) {
-    return unexpected(fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass,
-                                  fmt::join(variants::all_keywords(asset.passes[pass].keywords, key), " ")));
-  }
+  if (found == built.end()) return on_demand_variant(context, asset, pass, key, compiled);
   auto variant = std::make_unique<LoadedVariant>();
   variant->keywords = found->keywords;
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, *asset.package, *found);
   if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, pass, program.error()));
   variant->program = std::move(*program);
-  LoadedVariant* raw = variant.get();
-  asset.variants[{pass, key}] = std::move(variant);
-  *compiled = false;  // it was built offline
-  return raw;
+  return variant;  // built offline: *compiled stays false
+}
+
+const std::string* ShaderLibrary::on_demand_source(ShaderAsset& asset, std::string& why) {
+  why.clear();
+  if (!asset.package || strict_variants_ || !compiler_ || !compiler_->find || !compiler_->load || !compiler_->compile) {
+    return nullptr;
+  }
+  if (!asset.origin_searched) {
+    asset.origin_searched = true;
+    Timer timer{seconds_};
+    std::optional<std::string> path = compiler_->find(asset.shader.name);
+    if (!path) {
+      asset.origin_missing = fmt::format("no .shader in the shader folders declares '{}'", asset.shader.name);
+    } else if (Result<ShaderSource, std::string> source = compiler_->load(*path); !source) {
+      asset.origin_missing = fmt::format("{} declares '{}' but does not load:\n{}", *path, asset.shader.name,
+                                         source.error());
+    } else {
+      note_read(asset, *path);
+      asset.origin = ShaderAsset::Origin{*path, std::move(*source)};
+    }
+  }
+  if (!asset.origin) {
+    why = asset.origin_missing;
+    return nullptr;
+  }
+  return &asset.origin->path;
+}
+
+Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::on_demand_variant(const Context& context,
+                                                                                     ShaderAsset& asset, size_t pass,
+                                                                                     const variants::VariantKey& key,
+                                                                                     bool* compiled) {
+  const package::PackagePass& built = asset.package->passes[pass];
+  std::vector<std::string> keywords = variants::all_keywords(built.keywords, key);
+  if (!asset.origin) {
+    return unexpected(fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass,
+                                  fmt::join(keywords, " ")));
+  }
+  // The package's pass in the .shader: the same name and LightMode.
+  ShaderSource& source = asset.origin->source;
+  std::string light_mode = asset.passes[pass].ir.tag("LightMode");
+  auto from = std::find_if(source.passes.begin(), source.passes.end(), [&](const SelectedPass& p) {
+    return iequals(p.ir.name, built.name) && iequals(p.ir.tag("LightMode"), light_mode);
+  });
+  if (from == source.passes.end()) {
+    return unexpected(fmt::format("{}: pass {}: {} has no pass named '{}' with LightMode '{}': it is not the shader "
+                                  "the package was built from",
+                                  asset.path, pass, asset.origin->path, built.name, light_mode));
+  }
+  Result<std::unique_ptr<LoadedVariant>, std::string> variant =
+      compiled_variant(context, asset, source.shader, source.sources, from->pass, keywords, compiled);
+  if (!variant) return unexpected(variant.error());
+  std::vector<std::string> got = (*variant)->keywords, asked = keywords;
+  std::sort(got.begin(), got.end());
+  std::sort(asked.begin(), asked.end());
+  if (got != asked) {
+    return unexpected(fmt::format("{}: pass {}: {} compiles {{{}}} for the keywords {{{}}}: it is not the shader the "
+                                  "package was built from",
+                                  asset.path, pass, asset.origin->path, fmt::join(got, " "), fmt::join(asked, " ")));
+  }
+  return variant;
 }
 
 }  // namespace facet::runtime

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <memory>
@@ -26,6 +27,16 @@ struct LoadedVariant {
   std::vector<std::string> keywords;
 };
 
+// What tells a file's change on disk: its modification time and size
+// (exists false when it could not be read).
+struct FileStamp {
+  bool exists = false;
+  std::filesystem::file_time_type time{};
+  uintmax_t size = 0;
+  bool operator==(const FileStamp&) const = default;
+};
+FileStamp stamp_of(const std::string& path);
+
 struct ShaderAsset {
   std::string path;
   SourceMap sources;
@@ -34,11 +45,23 @@ struct ShaderAsset {
   int queue = 2000;                  // the SubShader's render queue (sema resolves its Queue tag)
   std::map<std::pair<size_t, variants::VariantKey>, std::unique_ptr<LoadedVariant>> variants;
   std::set<std::string> files_read;  // the .shader and every file its compiled variants included
+  // Each file of files_read as it was when read: a change means a reload.
+  std::map<std::string, FileStamp> stamps;
   // Loaded from a .facetpkg: its passes' variants are all there is (nothing
   // is compiled), and `available` lists each pass's variant keys for the
   // selection rule.
   std::optional<package::Package> package;
   std::vector<std::vector<variants::VariantKey>> available;
+  // A package's .shader, found by the shader's name through the development
+  // layer on the first draw the package has no exact variant for: the
+  // variants it lacks are compiled from it.
+  struct Origin {
+    std::string path;
+    ShaderSource source;
+  };
+  std::optional<Origin> origin;
+  bool origin_searched = false;
+  std::string origin_missing;  // why there is no origin, once searched
 };
 
 class ShaderLibrary {
@@ -53,12 +76,28 @@ class ShaderLibrary {
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
   Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
                                                 const variants::VariantKey& key, bool* compiled);
+  // For a package without a variant a draw asks for: the .shader it was
+  // built from, whose variants `variant` then compiles on demand. Null when
+  // the package's variants are all there is: no development layer, strict
+  // selection, or no .shader found for it (then `why` says so).
+  const std::string* on_demand_source(ShaderAsset& asset, std::string& why);
   // The development layer, or null when only packages are drawn.
   const ShaderCompiler* compiler() const { return compiler_.get(); }
+  void set_compiler(std::shared_ptr<const ShaderCompiler> compiler) { compiler_ = std::move(compiler); }
+  // Forgets every shader a file of which changed on disk since it was read
+  // (its next use loads it again); returns how many. The GPU must be done
+  // with their programs.
+  size_t forget_changed();
+  // Starts a render's accounting: load and compile time, loads, misses.
+  void begin_render() {
+    seconds_ = 0;
+    loads_ = 0;
+    misses_.clear();
+  }
   double seconds() const { return seconds_; }
   // Every file the loaded shaders and their compiled variants read, sorted.
   std::vector<std::string> files_read() const;
-  size_t loaded() const { return shaders_.size(); }
+  size_t loaded() const { return loads_; }  // shaders loaded since begin_render
 
   // How a draw picks a packaged variant: strict (no exact variant is an
   // error naming the keyword set) or Unity's closest match, each distinct
@@ -71,14 +110,34 @@ class ShaderLibrary {
   const std::vector<std::string>& misses() const { return misses_; }
 
  private:
-  Result<LoadedVariant*, std::string> packaged_variant(const Context& context, ShaderAsset& asset, size_t pass,
-                                                       const variants::VariantKey& key, bool* compiled);
+  Result<std::unique_ptr<LoadedVariant>, std::string> packaged_variant(const Context& context, ShaderAsset& asset,
+                                                                       size_t pass, const variants::VariantKey& key,
+                                                                       bool* compiled);
+  Result<std::unique_ptr<LoadedVariant>, std::string> on_demand_variant(const Context& context, ShaderAsset& asset,
+                                                                        size_t pass, const variants::VariantKey& key,
+                                                                        bool* compiled);
+  Result<std::unique_ptr<LoadedVariant>, std::string> compiled_variant(const Context& context, ShaderAsset& asset,
+                                                                       const ir::Shader& shader, SourceMap& sources,
+                                                                       size_t selected_pass,
+                                                                       const std::vector<std::string>& keywords,
+                                                                       bool* compiled);
+
+  void note_read(ShaderAsset& asset, const std::string& path);
 
   std::shared_ptr<const ShaderCompiler> compiler_;
   std::map<std::string, std::unique_ptr<ShaderAsset>> shaders_;
   double seconds_ = 0;
+  size_t loads_ = 0;
   bool strict_variants_ = false;
   std::vector<std::string> misses_;
+};
+
+// RenderOptions::shaders (renderer.h): the library kept between renders,
+// bound to the Context whose GPU programs it holds.
+class ShaderStore {
+ public:
+  const Context* context = nullptr;
+  std::unique_ptr<ShaderLibrary> library;
 };
 
 }  // namespace facet::runtime

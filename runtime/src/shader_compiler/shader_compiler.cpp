@@ -5,6 +5,7 @@
 
 #include "facet/compiler.h"
 #include "facet/runtime/shader_compiler.h"
+#include "shader_search.h"
 
 namespace facet::runtime {
 
@@ -40,6 +41,9 @@ std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerO
     return CompiledPassVariant{std::move(compiled->package),
                                {compiled->dependencies.begin(), compiled->dependencies.end()}};
   };
+  if (!options.shader_dirs.empty()) {
+    out->find = [dirs = options.shader_dirs](const std::string& name) { return find_shader_file(dirs, name); };
+  }
   return out;
 }
 

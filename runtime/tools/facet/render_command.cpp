@@ -23,7 +23,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, png, exr, device, cache, depfile, variants;
-  std::vector<std::string> include_dirs;
+  std::vector<std::string> include_dirs, shader_dirs;
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false, strict_variants = false;
 };
@@ -106,7 +106,9 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   auto frame = runtime::render_scene(**context, *scene,
                                      {.width = a.width, .height = a.height,
                                       .shader_compiler = runtime::make_shader_compiler(
-                                          {.cache_dir = a.cache, .include_dirs = a.include_dirs}),
+                                          {.cache_dir = a.cache,
+                                           .include_dirs = a.include_dirs,
+                                           .shader_dirs = a.shader_dirs}),
                                       .frames = a.frames, .strict_variants = a.strict_variants});
   if (!frame) {
     err << frame.error().message << "\n";
@@ -171,6 +173,10 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_option("--frames", a.frames, "render the frame N times after compiling once; --stats prints the median frame time")
       ->check(CLI::Range(1, 100000));
   app.add_option("-I,--include-dir", a.include_dirs, "add a folder to the #include search path of the scene's shaders");
+  app.add_option("--shader-dir", a.shader_dirs,
+                 "a folder searched (with its subfolders) for the .shader a package was built from, by the shader's "
+                 "name: a variant the package lacks is compiled from it on demand (not with --strict-variants)")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--emit-variants", a.variants,
                  "also write the variant collection of the frame (JSON: every pass and keyword set drawn, per shader) "
                  "for facetc --variants");

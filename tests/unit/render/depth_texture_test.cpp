@@ -12,11 +12,7 @@ namespace facet::runtime {
 namespace {
 
 using test_support::example_shader;
-
-std::array<int, 3> pixel(const RenderedFrame& f, int x, int y) {
-  const uint8_t* p = &f.ldr[(size_t(y) * f.width + x) * 4];
-  return {p[0], p[1], p[2]};
-}
+using test_support::pixel;
 
 // A grey floor 0.5 below a water plane that fades over `fade` world units of
 // depth behind it, seen from above at an angle.

@@ -14,13 +14,9 @@ namespace {
 using test_support::count_draws;
 using test_support::object_json;
 using test_support::small_scene;
+using test_support::pixel;
 
 using ForwardTest = test_support::RenderTest;
-
-std::array<int, 3> pixel(const RenderedFrame& f, int x, int y) {
-  const uint8_t* p = &f.ldr[(size_t(y) * f.width + x) * 4];
-  return {p[0], p[1], p[2]};
-}
 
 bool any_compiled(const RenderedFrame& f, const std::string& text) {
   return std::any_of(f.compiled.begin(), f.compiled.end(),

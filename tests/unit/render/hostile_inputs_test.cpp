@@ -431,7 +431,13 @@ INSTANTIATE_TEST_SUITE_P(
                                      "holds 89"},
                       FuzzFoundImage{"jpeg-iptc-third-block-past-its-marker.jpg",
                                      "the JPEG's IPTC block (APP13) declares 217 bytes of records, but its marker "
-                                     "holds 89"}),
+                                     "holds 89"},
+                      FuzzFoundImage{"png-text-chunk-past-the-end.png",
+                                     "the PNG's chunk 'tEXt' at byte 139 declares 1157627990 bytes of data, past the "
+                                     "end of the 284-byte file"},
+                      FuzzFoundImage{"png-text-chunk-past-the-end-rgba.png",
+                                     "the PNG's chunk 'tEXt' at byte 54 declares 2113929318 bytes of data, past the "
+                                     "end of the 375-byte file"}),
     [](const ::testing::TestParamInfo<FuzzFoundImage>& info) { return "case" + std::to_string(info.index); });
 
 // `facet render` of a one-quad scene textured with `image` succeeds and writes its PNG.
@@ -470,6 +476,37 @@ TEST(TextureFormatByName, AnExtensionNoReaderKnowsIsAnErrorNamingIt) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("_MainTex: " + file + ": no image reader for '.notanimage' files"), std::string::npos)
       << r.err;
+}
+
+// chunk() declaring `declared_length` bytes, whatever its data.
+std::string chunk_declaring(const std::string& type, const std::string& data, uint32_t declared_length) {
+  return big_endian(declared_length) + chunk(type, data).substr(4);
+}
+
+// The control of the PNG chunk walk: a text chunk after the header renders;
+// the same chunk declaring more bytes than the file holds, or more than PNG
+// allows, is refused before libpng allocates for it.
+TEST(PngChunkControl, ATextChunkRendersAndOneDeclaringTooMuchIsRefused) {
+  const std::string png = grey_png(4, 4, 4);
+  const size_t after_header = 8 + 12 + 13;
+  const std::string text = "Comment\0a grey square";
+  auto with_chunk = [&](uint32_t declared) {
+    return png.substr(0, after_header) + chunk_declaring("tEXt", text, declared) + png.substr(after_header);
+  };
+  expect_textured_render("png_text", write_file("png_text.png", with_chunk(uint32_t(text.size()))));
+  const std::string size = std::to_string(png.size() + 12 + text.size());
+  for (const auto& [name, declared, expected] :
+       {std::tuple{"png_past_end", uint32_t(png.size()), "declares " + std::to_string(png.size()) +
+                                                               " bytes of data, past the end of the " + size +
+                                                               "-byte file"},
+        std::tuple{"png_over_limit", uint32_t(0x80000000u),
+                   std::string("declares 2147483648 bytes, more than PNG allows (2147483647)")}}) {
+    std::string file = write_file(std::string(name) + ".png", with_chunk(declared));
+    Outcome refused = render_expecting_failure(name, write_scene(name, textured_scene(file)));
+    EXPECT_EQ(refused.code, 1) << name;
+    EXPECT_NE(refused.err.find(file + ": the PNG's chunk 'tEXt' at byte 33 " + expected), std::string::npos)
+        << refused.err;
+  }
 }
 
 // The negative control: the real file renders, so the header walk passes

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -107,6 +108,12 @@ class RenderTest : public LavapipeTest {
     return frame ? std::move(*frame) : RenderedFrame{};
   }
 };
+
+// The tone-mapped sRGB colour of pixel (x, y), row 0 at the top.
+inline std::array<int, 3> pixel(const RenderedFrame& f, int x, int y) {
+  const uint8_t* p = &f.ldr[(size_t(y) * f.width + x) * 4];
+  return {p[0], p[1], p[2]};
+}
 
 inline size_t count_draws(const RenderedFrame& frame, const std::string& light_mode, bool drawn = true) {
   size_t n = 0;

@@ -224,6 +224,81 @@ TEST_F(FacetRenderPackageTest, BadVariantCollectionsAreLocatedErrors) {
   }
 }
 
+// The ForwardAdd pass of PhongMultiLight's package without its point-light
+// variants; the sources' scene draws them.
+class OnDemandTest : public FacetRenderPackageTest {
+ protected:
+  void SetUp() override {
+    FacetRenderPackageTest::SetUp();
+    write_all(dir_ / "strip.json", R"({"strip": [{"always_off": ["POINT"], "pass": "FORWARD_DELTA"}]})");
+    build_package("Diffuse.shader", "Diffuse.facetpkg");
+    build_package("PhongMultiLight.shader", "Phong.facetpkg", {"--strip", "strip.json"});
+    write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+  }
+  static std::string shader_dir() { return (fs::path(FACET_SOURCE_DIR) / "examples/shaders").string(); }
+  const std::string miss_ = "facet render: warning: Phong.facetpkg: pass 1 FORWARD_DELTA: no variant for {POINT}; ";
+};
+
+TEST_F(OnDemandTest, AVariantThePackageLacksIsCompiledFromTheShaderOfThatName) {
+  write_scene("sources.json", example("Diffuse.shader"), example("PhongMultiLight.shader"));
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--validation"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+
+  FacetcRun run = facet_render(
+      {"packages.json", "-o", "packages.png", "--validation", "--stats", "--explain", "--shader-dir", shader_dir()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::string compiled_from = miss_ + "compiled on demand from " + shader_dir();
+  EXPECT_THAT(run.err, HasSubstr(compiled_from)) << run.err;
+  EXPECT_EQ(run.err.find(compiled_from, run.err.find(compiled_from) + 1), std::string::npos) << "one warning a miss";
+  EXPECT_THAT(run.out, HasSubstr("variants compiled: 1,")) << "only the point light's variant is compiled";
+  EXPECT_THAT(run.out, HasSubstr("compiled on demand from")) << "--explain says why";
+  std::string a = read_all(dir_ / "sources.png"), b = read_all(dir_ / "packages.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the exact variant is drawn, as from the sources";
+}
+
+TEST_F(OnDemandTest, WithoutTheShaderTheClosestMatchIsDrawnAndTheWarningSaysWhy) {
+  fs::create_directories(dir_ / "empty");
+  FacetcRun run = facet_render({"packages.json", "-o", "closest.png", "--shader-dir", "empty"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr(miss_ + "drawn with Unity's closest match {"));
+  EXPECT_THAT(run.err, HasSubstr("(no .shader in the shader folders declares 'Examples/PhongMultiLight')"));
+}
+
+TEST_F(OnDemandTest, StrictSelectionCompilesNothing) {
+  FacetcRun run = facet_render({"packages.json", "-o", "strict.png", "--strict-variants", "--shader-dir", shader_dir()});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("POINT")) << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "strict.png"));
+}
+
+TEST_F(OnDemandTest, AShaderOfThatNameWithOtherPassesIsAnError) {
+  fs::create_directories(dir_ / "other");
+  write_all(dir_ / "other/Impostor.shader", R"(Shader "Examples/PhongMultiLight" {
+  SubShader { Pass { Name "ONLY"
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    float4 vert(float4 v : POSITION) : SV_POSITION { return v; }
+    float4 frag() : SV_Target { return 1; }
+    ENDCG
+  } }
+})");
+  FacetcRun run = facet_render({"packages.json", "-o", "impostor.png", "--shader-dir", "other"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("has no pass named 'FORWARD_DELTA' with LightMode 'ForwardAdd': it is not the "
+                                 "shader the package was built from"))
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "impostor.png"));
+}
+
+TEST_F(OnDemandTest, AShaderFolderThatIsNoFolderIsAnError) {
+  FacetcRun run = facet_render({"packages.json", "-o", "x.png", "--shader-dir", "missing"});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_THAT(run.err, HasSubstr("missing"));
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
 TEST_F(FacetRenderPackageTest, EmittedVariantsNameImageEffectPassesByTheirIndex) {
   fs::path scene = fs::path(FACET_SOURCE_DIR) / "examples/scenes/post_chain.json";
   FacetcRun run = facet_render({scene.string(), "-o", "post.png", "--emit-variants", "post.json"});

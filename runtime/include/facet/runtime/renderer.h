@@ -26,6 +26,18 @@ class Context;
 
 struct FrameCapture;
 
+// Shaders kept from one render_scene call to the next, for an engine's or an
+// editor's loop: the .shader files and packages scenes named and the
+// variants compiled and created on the GPU for their draws, so that a later
+// render compiles and loads nothing it already has. Before each render, a
+// shader whose .shader or package file, or any file its variants included,
+// changed on disk (modification time or size) is forgotten: it is loaded
+// again and its variants compiled again as draws need them
+// (RenderStats::shaders_reloaded). A store holds GPU programs of the Context
+// it first rendered with and renders with no other; one render at a time.
+class ShaderStore;
+std::shared_ptr<ShaderStore> make_shader_store();
+
 struct RenderOptions {
   int width = 0, height = 0;  // 0: the scene's size
   // Loads and compiles the scene's .shader files; empty: the scene's shaders
@@ -46,6 +58,9 @@ struct RenderOptions {
   // when strict (Unity's strictShaderVariantMatching), else drawn with
   // Unity's closest match and listed once in RenderedFrame::variant_misses.
   bool strict_variants = false;
+  // Shaders kept between calls (make_shader_store); empty: loaded for this
+  // call only.
+  std::shared_ptr<ShaderStore> shaders;
 };
 
 // One draw (or one pass that was not drawn), for --explain and tests.
@@ -77,7 +92,8 @@ struct RenderStats {
   uint64_t triangles = 0;
   uint64_t pipelines = 0;          // graphics pipelines created
   uint64_t variants_compiled = 0;  // (pass, variant) pairs compiled
-  uint64_t shaders_loaded = 0;
+  uint64_t shaders_loaded = 0;     // .shader files and packages loaded by this render
+  uint64_t shaders_reloaded = 0;   // of RenderOptions::shaders: forgotten before it, their files having changed
   uint64_t textures_loaded = 0;    // from files
   std::optional<double> gpu_ms;    // the frame's GPU time from timestamps (the median over frames)
   std::vector<double> frame_ms;     // per frame: host time from the first uniform to the fence

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,10 @@ struct ShaderCompiler {
   std::function<Result<CompiledPassVariant, std::string>(const ir::Shader& shader, SourceMap& sources, size_t pass,
                                                          const std::vector<std::string>& keywords)>
       compile;
+  // The .shader that declares the shader `name` (`Shader "name"`), searched
+  // for in ShaderCompilerOptions::shader_dirs: where the renderer compiles a
+  // variant that a package lacks. nullopt when no file declares it.
+  std::function<std::optional<std::string>(const std::string& name)> find;
   // The stdlib's folder (its Shaders/ holds the procedural sky).
   std::string stdlib_dir;
 };
@@ -51,6 +56,10 @@ struct ShaderCompiler {
 struct ShaderCompilerOptions {
   std::string cache_dir;                  // the compiler's cache folder; empty: none
   std::vector<std::string> include_dirs;  // #include search folders (facetc -I)
+  // Folders searched, with their subfolders, for the .shader a package was
+  // built from, by the shader's name: in order, files in path order, the
+  // first that declares the name wins.
+  std::vector<std::string> shader_dirs;
 };
 
 // The development layer (link facet_shader_compiler): a ShaderCompiler over
