@@ -3,6 +3,8 @@
 // value; whatever was created before a failure is destroyed by ~Context.
 #include <fmt/format.h>
 
+#include <vector>
+
 #include "facet/runtime/vulkan_context.h"
 #include "vulkan/device_query.h"
 
@@ -65,16 +67,25 @@ struct ContextBuilder {
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
+    std::vector<const char*> extensions;
     VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable_info{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
-    const char* extension = VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME;
     context.pipeline_statistics_ = pipeline_statistics && context.info_.pipeline_executable_info;
     if (context.pipeline_statistics_) {
       executable_info.pipelineExecutableInfo = VK_TRUE;
+      executable_info.pNext = const_cast<void*>(info.pNext);
       info.pNext = &executable_info;
-      info.enabledExtensionCount = 1;
-      info.ppEnabledExtensionNames = &extension;
+      extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
     }
+    VkPhysicalDeviceMaintenance4Features maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES};
+    if (context.info_.maintenance4) {
+      maintenance4.maintenance4 = VK_TRUE;
+      maintenance4.pNext = const_cast<void*>(info.pNext);
+      info.pNext = &maintenance4;
+      extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
+    }
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     VkPhysicalDeviceShaderFloat16Int8Features float16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES};
     context.shader_float16_ = supports_float16(context);
     float16.shaderFloat16 = VK_TRUE;

@@ -48,17 +48,20 @@ bool offers_extension(VkPhysicalDevice device, const char* name) {
                      [&](const VkExtensionProperties& e) { return std::string_view(e.extensionName) == name; });
 }
 
-// The extension and its one feature (vkGetPhysicalDeviceFeatures2 is core
-// from Vulkan 1.1; older devices are rejected by select_device anyway).
-bool offers_pipeline_executable_info(VkPhysicalDevice device, uint32_t api_version) {
+// `extension` is offered and its feature struct `Feature` (of `type`) has
+// `member` on (vkGetPhysicalDeviceFeatures2 is core from Vulkan 1.1; older
+// devices are rejected by select_device anyway).
+template <typename Feature>
+bool offers_feature(VkPhysicalDevice device, uint32_t api_version, const char* extension, VkStructureType type,
+                    VkBool32 Feature::*member) {
   if (api_version < VK_API_VERSION_1_1) return false;
-  if (!offers_extension(device, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) return false;
-  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR feature{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  if (!offers_extension(device, extension)) return false;
+  Feature feature{};
+  feature.sType = type;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &feature;
   vkGetPhysicalDeviceFeatures2(device, &features);
-  return feature.pipelineExecutableInfo == VK_TRUE;
+  return feature.*member == VK_TRUE;
 }
 
 std::string rejection(const DeviceInfo& device, const std::string& why) {
@@ -138,7 +141,13 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
     info.has_compute_queue = true;
     info.timestamp_valid_bits = queue_families(device)[*family].timestampValidBits;
   }
-  info.pipeline_executable_info = offers_pipeline_executable_info(device, info.api_version);
+  info.pipeline_executable_info = offers_feature(
+      device, info.api_version, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME,
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR,
+      &VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR::pipelineExecutableInfo);
+  info.maintenance4 = offers_feature(device, info.api_version, VK_KHR_MAINTENANCE_4_EXTENSION_NAME,
+                                     VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES,
+                                     &VkPhysicalDeviceMaintenance4Features::maintenance4);
   return info;
 }
 

@@ -34,6 +34,10 @@ struct DeviceInfo {
   // feature: the driver reports statistics of compiled pipelines
   // (facet/runtime/pipeline_statistics.h). lavapipe does not.
   bool pipeline_executable_info = false;
+  // VK_KHR_maintenance4 and its feature, enabled where offered: a vertex
+  // stage may write outputs the fragment stage does not read (as a Unity
+  // variant's often does) without a validation warning.
+  bool maintenance4 = false;
 };
 
 // "cpu", "discrete-gpu", ...
