@@ -7,9 +7,10 @@
 //
 // The package must be of examples/shaders/Keywords.shader (its _Color,
 // _EmissionColor and _EMISSION). Variants are selected strictly: a keyword
-// set the package lacks is an error. A ShaderStore keeps the package and
-// its variants' GPU programs from frame to frame; the rest of each frame
-// (meshes, pipelines) is still created by render_scene.
+// set the package lacks is an error. A ShaderStore keeps the package, its
+// variants' GPU programs and their pipelines from frame to frame; the rest
+// of each frame (meshes, targets, descriptor sets) is still created by
+// render_scene.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

@@ -14,10 +14,18 @@ test -f "$work/prefix/include/facet/runtime/renderer.h" || { echo "no runtime he
 cmake -S "$source/examples/engine" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
 cmake --build "$work/build" > "$work/build.log"
-# The example links the runtime alone.
+# The example links the runtime alone: no compiler library among its shared
+# libraries (TBB, curl, OpenSSL) or its symbols (glslang, SPIRV-Tools and
+# SPIRV-Cross are static on Debian), as FacetPlayTest.LinksNoCompilerLibrary
+# reads facet-play.
 if readelf -d "$work/build/facet_engine" | grep -E -i 'glslang|SPIRV|spirv-cross|tbb|curl|ssl'; then
   echo "facet_engine links a compiler library"; exit 1
 fi
+nm -C "$work/build/facet_engine" > "$work/symbols.txt"
+if grep -E 'glslang::|spvtools::|spirv_cross::|spv::|facet::Compiler::|facet::backend::' "$work/symbols.txt"; then
+  echo "facet_engine holds compiler code"; exit 1
+fi
+grep -q 'facet::runtime::render_scene' "$work/symbols.txt" || { echo "no symbols to read in facet_engine"; exit 1; }
 export FACET_STDLIB_DIR="$work/prefix/share/facet/stdlib"
 # lavapipe's memory, unloaded before exit, cannot be matched by tests/lsan.supp
 # (run_add_shaders_test.sh says why); facet's own is checked in process.

@@ -51,6 +51,7 @@ void adopt_package(ShaderAsset& asset, package::Package pkg) {
 }  // namespace
 
 Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
+  used_.insert(path);
   if (auto it = shaders_.find(path); it != shaders_.end()) return it->second.get();
   Timer timer{seconds_};
   auto asset = std::make_unique<ShaderAsset>();
@@ -118,7 +119,9 @@ std::shared_ptr<ShaderStore> make_shader_store() { return std::make_shared<Shade
 
 std::vector<std::string> ShaderLibrary::files_read() const {
   std::set<std::string> all;
-  for (const auto& [path, asset] : shaders_) all.insert(asset->files_read.begin(), asset->files_read.end());
+  for (const auto& [path, asset] : shaders_) {
+    if (used_.count(path)) all.insert(asset->files_read.begin(), asset->files_read.end());
+  }
   return {all.begin(), all.end()};
 }
 
@@ -141,6 +144,11 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
 Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::compiled_variant(
     const Context& context, ShaderAsset& asset, const ir::Shader& shader, SourceMap& sources, size_t selected_pass,
     const std::vector<std::string>& keywords, bool* compiled) {
+  if (!compiler_ || !compiler_->compile) {
+    return unexpected(fmt::format("{}: pass {}: compiling a variant needs the development layer "
+                                  "(RenderOptions::shader_compiler), which this render was not given",
+                                  asset.path, selected_pass));
+  }
   Result<CompiledPassVariant, std::string> out = compiler_->compile(shader, sources, selected_pass, keywords);
   if (!out) return unexpected(out.error());
   for (const std::string& file : out->files_read) note_read(asset, file);
@@ -178,8 +186,10 @@ const std::string* ShaderLibrary::on_demand_source(ShaderAsset& asset, std::stri
   if (!asset.package || strict_variants_ || !compiler_ || !compiler_->find || !compiler_->load || !compiler_->compile) {
     return nullptr;
   }
-  if (!asset.origin_searched) {
-    asset.origin_searched = true;
+  // A failed search is tried again by the next render (the file may be
+  // saved or fixed by then); a found file is kept until it changes.
+  if (!asset.origin && asset.origin_searched_render != renders_) {
+    asset.origin_searched_render = renders_;
     Timer timer{seconds_};
     std::optional<std::string> path = compiler_->find(asset.shader.name);
     if (!path) {
@@ -209,12 +219,17 @@ Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::on_demand_var
     return unexpected(fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass,
                                   fmt::join(keywords, " ")));
   }
-  // The package's pass in the .shader: the same name and LightMode.
+  // The package's pass in the .shader: of the passes with its name and
+  // LightMode (several unnamed passes are common), the one at the same rank.
   ShaderSource& source = asset.origin->source;
   std::string light_mode = asset.passes[pass].ir.tag("LightMode");
-  auto from = std::find_if(source.passes.begin(), source.passes.end(), [&](const SelectedPass& p) {
-    return iequals(p.ir.name, built.name) && iequals(p.ir.tag("LightMode"), light_mode);
-  });
+  auto same = [&](const ir::Pass& p) { return iequals(p.name, built.name) && iequals(p.tag("LightMode"), light_mode); };
+  size_t rank = size_t(std::count_if(asset.passes.begin(), asset.passes.begin() + std::ptrdiff_t(pass),
+                                     [&](const SelectedPass& p) { return same(p.ir); }));
+  auto from = source.passes.begin();
+  for (size_t seen = 0; from != source.passes.end(); ++from) {
+    if (same(from->ir) && seen++ == rank) break;
+  }
   if (from == source.passes.end()) {
     return unexpected(fmt::format("{}: pass {}: {} has no pass named '{}' with LightMode '{}': it is not the shader "
                                   "the package was built from",

@@ -60,8 +60,8 @@ struct ShaderAsset {
     ShaderSource source;
   };
   std::optional<Origin> origin;
-  bool origin_searched = false;
-  std::string origin_missing;  // why there is no origin, once searched
+  uint64_t origin_searched_render = UINT64_MAX;  // ShaderLibrary's render number of the last search
+  std::string origin_missing;                    // why there is no origin, after a search
 };
 
 class ShaderLibrary {
@@ -90,12 +90,15 @@ class ShaderLibrary {
   size_t forget_changed();
   // Starts a render's accounting: load and compile time, loads, misses.
   void begin_render() {
+    ++renders_;
     seconds_ = 0;
     loads_ = 0;
     misses_.clear();
+    used_.clear();
   }
   double seconds() const { return seconds_; }
-  // Every file the loaded shaders and their compiled variants read, sorted.
+  // Every file the shaders this render loaded or used and their compiled
+  // variants read, sorted.
   std::vector<std::string> files_read() const;
   size_t loaded() const { return loads_; }  // shaders loaded since begin_render
 
@@ -128,6 +131,8 @@ class ShaderLibrary {
   std::map<std::string, std::unique_ptr<ShaderAsset>> shaders_;
   double seconds_ = 0;
   size_t loads_ = 0;
+  uint64_t renders_ = 0;
+  std::set<std::string> used_;  // paths load() was asked for since begin_render
   bool strict_variants_ = false;
   std::vector<std::string> misses_;
 };

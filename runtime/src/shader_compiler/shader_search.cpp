@@ -20,7 +20,8 @@ std::vector<std::string> shader_files_under(const std::string& dir) {
   std::error_code ec;
   fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
-    if (it->path().extension() == ".shader" && it->is_regular_file(ec)) files.push_back(it->path().string());
+    std::error_code file_error;  // a dangling link is passed over; the walk goes on
+    if (it->path().extension() == ".shader" && it->is_regular_file(file_error)) files.push_back(it->path().string());
   }
   std::sort(files.begin(), files.end());
   return files;

@@ -489,7 +489,7 @@ std::string chunk_declaring(const std::string& type, const std::string& data, ui
 TEST(PngChunkControl, ATextChunkRendersAndOneDeclaringTooMuchIsRefused) {
   const std::string png = grey_png(4, 4, 4);
   const size_t after_header = 8 + 12 + 13;
-  const std::string text = "Comment\0a grey square";
+  const std::string text("Comment\0a grey square", 21);  // keyword, NUL, text
   auto with_chunk = [&](uint32_t declared) {
     return png.substr(0, after_header) + chunk_declaring("tEXt", text, declared) + png.substr(after_header);
   };

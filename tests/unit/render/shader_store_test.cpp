@@ -19,6 +19,7 @@ constexpr const char* kShader = R"(Shader "Tests/StoreTint" {
     CGPROGRAM
     #pragma vertex vert
     #pragma fragment frag
+    #pragma multi_compile __ HALF_TINT
     #include "UnityCG.cginc"
     #include "tint.cginc"
     float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
@@ -110,6 +111,17 @@ TEST_F(ShaderStoreTest, ABrokenEditIsALocatedErrorAndTheFixedFileRendersAgain) {
   write("Tint.shader", kShader);
   RenderedFrame fixed = render_ok();
   EXPECT_EQ(pixel(fixed, 32, 32), (std::array<int, 3>{255, 0, 0}));
+}
+
+// A kept .shader whose draw needs a variant not compiled yet, in a render
+// given no development layer: a located error, not a crash.
+TEST_F(ShaderStoreTest, ANewVariantWithoutTheDevelopmentLayerIsAnError) {
+  render_ok();
+  scene_.objects[0].material.keywords = {"HALF_TINT"};
+  auto frame = render_scene(context(), scene_, {.shaders = store_});
+  ASSERT_FALSE(frame);
+  EXPECT_NE(frame.error().message.find("needs the development layer"), std::string::npos) << frame.error().message;
+  EXPECT_TRUE(render_kept()) << "with the layer again, the variant compiles";
 }
 
 TEST_F(ShaderStoreTest, AStoreRendersWithNoOtherContext) {

@@ -33,8 +33,9 @@ struct FrameCapture;
 // shader whose .shader or package file, or any file its variants included,
 // changed on disk (modification time or size) is forgotten: it is loaded
 // again and its variants compiled again as draws need them
-// (RenderStats::shaders_reloaded). A store holds GPU programs of the Context
-// it first rendered with and renders with no other; one render at a time.
+// (RenderStats::shaders_reloaded). A store holds GPU programs and pipelines
+// of the Context it first rendered with and renders with no other: destroy
+// it before that Context. One render at a time.
 class ShaderStore;
 std::shared_ptr<ShaderStore> make_shader_store();
 
@@ -109,7 +110,8 @@ struct RenderedFrame {
   std::vector<DrawRecord> draws; // in submission order; skipped passes after them
   std::vector<std::string> compiled;  // "Examples/PhongMultiLight FORWARD_DELTA: POINT", in compile order
   std::vector<std::string> shader_files;  // every .shader and include the shaders and variants drawn read, sorted
-  std::vector<std::string> variant_misses;  // distinct draws a package had no exact variant for (closest match used)
+  std::vector<std::string> variant_misses;  // distinct draws a package had no exact variant for (closest match
+                                            // used, or the variant compiled on demand; each says which)
   RenderStats stats;
 };
 
