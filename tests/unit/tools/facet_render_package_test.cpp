@@ -292,6 +292,53 @@ TEST_F(OnDemandTest, AShaderOfThatNameWithOtherPassesIsAnError) {
   EXPECT_FALSE(fs::exists(dir_ / "impostor.png"));
 }
 
+// Two unnamed passes without LightMode: the package's second pass is
+// compiled from the shader's second, not from the first of that name.
+TEST_F(OnDemandTest, PassesOfOneNameAreMatchedByTheirRank) {
+  fs::create_directories(dir_ / "two");
+  auto pass = [](const std::string& colour, const std::string& state) {
+    return "  Pass { " + state + R"(
+    CGPROGRAM
+    #pragma vertex vert
+    #pragma fragment frag
+    #pragma multi_compile __ ADD_BLUE
+    #include "UnityCG.cginc"
+    float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+    fixed4 frag() : SV_Target {
+      fixed4 c = )" + colour + R"(;
+    #ifdef ADD_BLUE
+      c.b = 1;
+    #endif
+      return c;
+    }
+    ENDCG
+  }
+)";
+  };
+  write_all(dir_ / "two/TwoPasses.shader", "Shader \"Tests/TwoPasses\" {\n SubShader {\n" +
+                                               pass("fixed4(1, 0, 0, 1)", "") +
+                                               pass("fixed4(0, 1, 0, 1)", "Blend One One ZTest LEqual") + " }\n}\n");
+  // The package holds pass 0 with ADD_BLUE and pass 1 without it.
+  write_all(dir_ / "collection.json", R"({"shaders": [{"shader": "Tests/TwoPasses", "passes": [
+    {"pass": 0, "variants": [["ADD_BLUE"]]}, {"pass": 1, "variants": [[]]}]}]})");
+  FacetcRun built = facetc({"two/TwoPasses.shader", "--variants", "collection.json", "-o", "Two.facetpkg"});
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  auto scene = [](const std::string& shader) {
+    return R"({"width": 32, "height": 32, "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "fov": 40},
+      "objects": [{"mesh": "cube", "material": {"shader": ")" + shader + R"(", "keywords": ["ADD_BLUE"]}}]})";
+  };
+  write_all(dir_ / "sources.json", scene("two/TwoPasses.shader"));
+  write_all(dir_ / "package.json", scene("Two.facetpkg"));
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--validation"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  FacetcRun package = facet_render({"package.json", "-o", "package.png", "--validation", "--shader-dir", "two"});
+  ASSERT_EQ(package.exit_code, 0) << package.err;
+  EXPECT_THAT(package.err, HasSubstr("Two.facetpkg: pass 1: no variant for {ADD_BLUE}; compiled on demand from"));
+  std::string a = read_all(dir_ / "sources.png"), b = read_all(dir_ / "package.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the second pass drew the first pass's code";
+}
+
 TEST_F(OnDemandTest, AShaderFolderThatIsNoFolderIsAnError) {
   FacetcRun run = facet_render({"packages.json", "-o", "x.png", "--shader-dir", "missing"});
   EXPECT_NE(run.exit_code, 0);
