@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "facet/compiler.h"  // kMaxShaderBytes: a larger file is not a candidate
 #include "facet/shaderlab.h"
 #include "facet/support/read_file.h"
 
@@ -11,9 +12,6 @@ namespace facet::runtime {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A .shader larger than this is not a candidate (facetc's own input limit).
-constexpr uint64_t kMaxShaderBytes = uint64_t(64) << 20;
 
 std::vector<std::string> shader_files_under(const std::string& dir) {
   std::vector<std::string> files;
