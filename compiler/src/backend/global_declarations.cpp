@@ -95,7 +95,9 @@ std::string normalized_type(std::string_view type) {
 const std::set<std::string_view> kSkipped = {"struct", "typedef", "static", "groupshared", "const", "namespace",
                                              "class", "interface", "cbuffer", "tbuffer", "return"};
 const std::set<std::string_view> kQualifiers = {"uniform", "extern", "row_major", "column_major", "precise",
-                                                "volatile", "shared", "nointerpolation", "linear"};
+                                                "volatile", "shared", "nointerpolation", "linear", "inline",
+                                                "export", "unorm", "snorm", "globallycoherent", "centroid",
+                                                "noperspective", "sample"};
 
 struct Declared {
   std::string type;
@@ -168,6 +170,10 @@ class Checker {
     // cleanly), but its array sizes are read as any other.
     bool local = at(i).text == "static" || at(i).text == "const";
     while (i < end && (at(i).text == "static" || at(i).text == "const")) ++i;
+    if (i + 1 < end && at(i).text == "struct" && at(i + 1).kind == Token::ident) {
+      const Token& name = at(i + 1);
+      structs_.emplace(std::string(name.text), Declared{"struct", name.file, name.line});
+    }
     if (i >= end || kSkipped.count(at(i).text)) return;
     while (i < end && kQualifiers.count(at(i).text)) ++i;
     if (i >= end || at(i).kind != Token::ident) return;
@@ -248,6 +254,11 @@ class Checker {
   }
 
   void declare(const Token& name, const std::string& type) {
+    if (auto named = structs_.find(std::string(name.text)); named != structs_.end()) {
+      return fail(name, fmt::format("redefinition of the struct declared at {}:{}; a global cannot take a "
+                                    "struct's name",
+                                    t_.files[named->second.file], named->second.line));
+    }
     auto [it, inserted] = declared_.emplace(std::string(name.text), Declared{type, name.file, name.line});
     if (inserted || it->second.type == type) return;
     fail(name, fmt::format("redefinition with another type ({} here, {} at {}:{}); a global has one type", type,
@@ -256,6 +267,7 @@ class Checker {
 
   const Tokens& t_;
   std::map<std::string, Declared> declared_;
+  std::map<std::string, Declared> structs_;  // by name, where declared
   std::optional<DeclarationProblem> problem_;
 };
 

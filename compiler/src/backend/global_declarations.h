@@ -4,6 +4,7 @@
 //   float4 X; float X;    a global uniform declared again with another type
 //                         (also "float4 f(v2f i) X;": glslang reads X as a
 //                         declarator of float4)
+//   struct S {...}; float S;  a global named like a struct
 //   float a[t a];         an array size with two operands in a row
 //   float w[N * k);       a bracket closed by the wrong one
 // Internal to the backend stage.

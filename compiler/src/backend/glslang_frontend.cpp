@@ -319,15 +319,50 @@ bool without_throwing(GlslangOutput& out, const AssembledSource& source, std::st
   }
 }
 
+// An HLSL program as glslang's parser takes it: preprocessed, facet's
+// pragmas blanked, member dots closed up and matrix swizzles rewritten
+// again (a macro may build one: "input.a" with a = _22_23_24). nullopt, with
+// the log in `out`, when preprocessing fails.
+std::optional<std::string> preprocessed_hlsl(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                                             const BackendOptions& options, FileIncluder& includer,
+                                             GlslangOutput& out) {
+  GlslangOutput preprocessed = preprocess_glslang(source, language, stage, options, includer);
+  if (!preprocessed.ok) {
+    out.parse_log = std::move(preprocessed.parse_log);
+    return std::nullopt;
+  }
+  return rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed)));
+}
+
+// True, with the error in `out`, when `text` holds a declaration glslang's
+// HLSL parser crashes on (global_declarations.h).
+bool refused_declaration(std::string_view text, const AssembledSource& source, GlslangOutput& out) {
+  std::optional<DeclarationProblem> problem = find_declaration_problem(text);
+  if (!problem) return false;
+  std::string file = problem->file.empty() ? source.root_name : problem->file;
+  out.parse_log = fmt::format("ERROR: {}:{}: '{}' : {}\n", file, problem->line, problem->token, problem->message);
+  return true;
+}
+
 }  // namespace
 
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
                             const std::string& entry, const BackendOptions& options, FileIncluder& includer,
                             const std::function<void(const glslang::TIntermediate&)>& visit) {
   GlslangOutput out;
+  // HLSL is parsed as run_glslang parses it, preprocessed and checked first:
+  // the parser would crash on the declarations the check refuses.
+  std::string hlsl;
+  const std::string* program_text = &source.text;
+  if (is_hlsl(language)) {
+    std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
+    if (!text || refused_declaration(*text, source, out)) return out;
+    hlsl = std::move(*text);
+    program_text = &hlsl;
+  }
   glslang::TShader shader(to_glslang(stage));
-  const char* text = source.text.c_str();
-  const int length = int(source.text.size());
+  const char* text = program_text->c_str();
+  const int length = int(program_text->size());
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, entry, options);
@@ -349,22 +384,13 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   std::string reduced;
   const std::string* program_text = &source.text;
   if (is_hlsl(language) && !options.debug_info) {
-    GlslangOutput preprocessed = preprocess_glslang(source, language, stage, options, includer);
-    if (!preprocessed.ok) {
-      out.parse_log = std::move(preprocessed.parse_log);
-      return out;
-    }
-    // Matrix swizzles again: a macro may build one ("input.a" with a = _22_23_24).
-    std::string text = rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed)));
-    reduced = with_static_initializers_in_entry(without_unreachable_functions(text, entry), entry);
+    std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
+    if (!text) return out;
+    reduced = with_static_initializers_in_entry(without_unreachable_functions(*text, entry), entry);
     if (stage == Stage::fragment) reduced = with_front_facing_as_bool(reduced, entry);
-    out.preprocessed = std::move(text);
+    out.preprocessed = std::move(*text);
     program_text = &reduced;
-    if (std::optional<DeclarationProblem> problem = find_declaration_problem(reduced)) {
-      std::string file = problem->file.empty() ? source.root_name : problem->file;
-      out.parse_log = fmt::format("ERROR: {}:{}: '{}' : {}\n", file, problem->line, problem->token, problem->message);
-      return out;
-    }
+    if (refused_declaration(reduced, source, out)) return out;
   }
   glslang::TShader shader(to_glslang(stage));
   const char* text = program_text->c_str();

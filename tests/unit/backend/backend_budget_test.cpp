@@ -128,6 +128,28 @@ TEST_F(BackendBudgetTest, ANameAfterAFunctionsDeclarationIsRefusedBeforeGlslang)
   }
 }
 
+// Found by fuzz_frontend: glslang's HLSL front end dereferences a null
+// pointer (growGlobalUniformBlock) on a global uniform named like a struct,
+// which fxc refuses as a redefinition.
+TEST_F(BackendBudgetTest, AGlobalNamedLikeAStructIsRefusedBeforeGlslang) {
+  for (const char* global : {"half S;", "half _G S;", "float4 _G, S;"}) {
+    diags_ = {};
+    TestShader t = inline_shader(std::string("struct S { float a; };\n") + global + "\nfloat f(float a) { return a; }");
+    Diagnostic d = fail(t);
+    EXPECT_EQ(d.message, "'S': redefinition of the struct declared at " + std::string(FACET_TESTDATA_DIR) +
+                             "/backend/inline.shader:5; a global cannot take a struct's name")
+        << text_;
+    EXPECT_EQ(where(t, d).substr(0, 2), "6:") << text_;
+  }
+}
+
+TEST_F(BackendBudgetTest, AStaticNamedLikeAStructIsLeftToGlslang) {
+  TestShader t = inline_shader("struct S { float a; };\nstatic half S;\nfloat f(float a) { return a; }");
+  diags_ = {};
+  (void)backend_.compile(t.shader, t.program, Stage::fragment, {}, {}, t.sources, diags_);
+  for (const Diagnostic& d : diags_.all()) EXPECT_EQ(d.message.find("a global cannot take"), std::string::npos);
+}
+
 TEST_F(BackendBudgetTest, ABracketClosedByTheWrongOneIsRefusedBeforeGlslang) {
   TestShader t = inline_shader("static const float w[N * k) * w[k];\nfloat f(float a) { return a; }");
   Diagnostic d = fail(t);

@@ -225,6 +225,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "#pragma surface surf Lambert alpha:sometimes\n" + kInput +
                     "void surf(Input IN, inout SurfaceOutput o) {}\n",
                 "unknown alpha mode 'sometimes'"},
+        // Found by fuzz_frontend: the analysis parse crashed inside glslang.
+        BadCase{"GlobalNamedLikeTheOutputStruct",
+                "#pragma surface surf Standard\n" + kInput + "half _Gloss SurfaceOutputStandard;\n" +
+                    "void surf(Input IN, inout SurfaceOutputStandard o) {}\n",
+                "a global cannot take a struct's name"},
+        BadCase{"UnbalancedParenthesis",
+                "#pragma surface surf Standard\n" + kInput + "half _Gloss o) {}\n" +
+                    "void surf(Input IN, inout SurfaceOutputStandard o) {}\n",
+                "')' closes nothing"},
         BadCase{"MissingVertexModifier",
                 "#pragma surface surf Lambert vertex:vert\n" + kInput +
                     "void surf(Input IN, inout SurfaceOutput o) {}\n",
