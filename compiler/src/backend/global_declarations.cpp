@@ -5,9 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace facet::backend {
@@ -105,9 +107,31 @@ struct Declared {
   uint32_t line;
 };
 
+// Built-in scalar, vector and matrix type names (a cast's or constructor's
+// type is not an undeclared identifier).
+bool builtin_type(std::string_view name) {
+  for (std::string_view scalar : {"min16float", "min10float", "min16uint", "min16int", "min12int", "double", "float",
+                                  "fixed", "dword", "half", "uint", "bool", "int"}) {
+    if (!name.starts_with(scalar)) continue;
+    std::string_view rest = name.substr(scalar.size());
+    return rest.empty() || (rest.size() == 1 && digit(rest[0])) ||
+           (rest.size() == 3 && digit(rest[0]) && rest[1] == 'x' && digit(rest[2]));
+  }
+  return name == "vector" || name == "matrix" || name == "true" || name == "false";
+}
+
+// Resource object types, which an entry point cannot return.
+bool resource_type(std::string_view type) {
+  for (std::string_view prefix : {"RW", "Texture", "Buffer", "StructuredBuffer", "ByteAddressBuffer", "Append",
+                                  "Consume", "Sampler", "sampler", "ConstantBuffer"}) {
+    if (type.starts_with(prefix)) return true;
+  }
+  return false;
+}
+
 class Checker {
  public:
-  explicit Checker(const Tokens& tokens) : t_(tokens) {}
+  Checker(const Tokens& tokens, std::string_view entry) : t_(tokens), entry_(entry) {}
 
   std::optional<DeclarationProblem> run() {
     // Statements at the top level, and the members of cbuffer blocks.
@@ -115,8 +139,20 @@ class Checker {
     bool in_cbuffer = false;
     size_t start = 0;
     std::vector<size_t> open;  // the brackets open, innermost last
+    std::vector<bool> switch_body;  // per open '{': a switch's body
+    bool switch_next = false;       // the next '{' opens a switch's body
     for (size_t i = 0; i < t_.list.size() && !problem_; ++i) {
       std::string_view s = t_.list[i].text;
+      if (s == "switch") switch_next = true;
+      if (s == "{") switch_body.push_back(std::exchange(switch_next, false));
+      if (s == "}" && !switch_body.empty()) switch_body.pop_back();
+      if ((s == "case" || (s == "default" && i + 1 < t_.list.size() && at(i + 1).text == ":")) &&
+          std::find(switch_body.begin(), switch_body.end(), true) == switch_body.end()) {
+        fail(at(i), fmt::format("'{}' outside a switch statement", s));
+        break;
+      }
+      if (s == "return") return_with_condition(i);
+      if (at(i).kind == Token::ident) seen_.insert(s);
       if (s == "(" || s == "[" || s == "{") open.push_back(i);
       if (s == ")" || s == "]" || s == "}") {
         static constexpr std::string_view kOpener[] = {"(", "[", "{"};
@@ -162,6 +198,28 @@ class Checker {
     if (!problem_) problem_ = DeclarationProblem{t_.files[token.file], token.line, std::string(token.text), std::move(message)};
   }
 
+  // glslang's HLSL parser crashes on "return c ? a : X;" where X was never
+  // declared: a name in a return's conditional expression that the text has
+  // not named before (not a call, a member or a built-in type) is refused as
+  // undeclared, as fxc refuses it.
+  void return_with_condition(size_t begin) {
+    size_t end = begin + 1;
+    bool conditional = false;
+    for (int nesting = 0; end < t_.list.size(); ++end) {
+      std::string_view s = at(end).text;
+      nesting += (s == "(" || s == "[" || s == "{") ? 1 : (s == ")" || s == "]" || s == "}") ? -1 : 0;
+      if (nesting < 0 || (nesting == 0 && s == ";")) break;
+      conditional = conditional || s == "?";
+    }
+    if (!conditional) return;
+    for (size_t k = begin + 1; k < end; ++k) {
+      const Token& name = at(k);
+      if (name.kind != Token::ident || seen_.count(name.text) || builtin_type(name.text)) continue;
+      if (at(k - 1).text == "." || (k + 1 < end && at(k + 1).text == "(")) continue;
+      return fail(name, fmt::format("undeclared identifier '{}'", name.text));
+    }
+  }
+
   // [qualifiers] TYPE[<...>] NAME [dims] [: ...] [= init] (, NAME ...)* in [begin, end).
   void statement(size_t begin, size_t end) {
     size_t i = begin;
@@ -173,6 +231,7 @@ class Checker {
     if (i + 1 < end && at(i).text == "struct" && at(i + 1).kind == Token::ident) {
       const Token& name = at(i + 1);
       structs_.emplace(std::string(name.text), Declared{"struct", name.file, name.line});
+      known_.insert(name.text);
     }
     if (i >= end || kSkipped.count(at(i).text)) return;
     while (i < end && kQualifiers.count(at(i).text)) ++i;
@@ -190,7 +249,13 @@ class Checker {
     while (i < end) {
       if (at(i).kind != Token::ident) return;
       const Token& name = at(i++);
+      known_.insert(name.text);
       if (i < end && at(i).text == "(") {
+        if (!entry_.empty() && name.text == entry_ && resource_type(type)) {
+          return fail(name, fmt::format("the entry point '{}' returns a '{}'; an entry point returns values or "
+                                        "structs, not resource objects",
+                                        name.text, type));
+        }
         // A function's declaration: after its ')' and semantic comes its
         // body or ';'. glslang reads a name there as another declarator of
         // the type and crashes when the name is taken ("float4 f(v2f i)
@@ -215,7 +280,11 @@ class Checker {
           bracket += at(close).text == "[" ? 1 : at(close).text == "]" ? -1 : 0;
           if (bracket == 0) break;
         }
-        if (std::optional<std::string> problem = array_size_problem(i + 1, close)) return fail(at(i), *problem);
+        // A '{' ends the statement when an initializer list follows.
+        bool initialized = end < t_.list.size() && at(end).text == "{";
+        if (std::optional<std::string> problem = array_size_problem(i + 1, close, initialized)) {
+          return fail(at(i), *problem);
+        }
         for (size_t k = i; k <= close && k < end; ++k) dims += at(k).text;
         i = close + 1;
       }
@@ -233,22 +302,31 @@ class Checker {
 
   // An array size glslang can parse without crashing: no stray character or
   // ',', a start and an end an expression may have, no two operands in a row.
-  std::optional<std::string> array_size_problem(size_t begin, size_t end) const {
+  // With an initializer list (`initialized`), glslang also crashes on a
+  // size naming something undeclared ("w[C+U] = {...}").
+  std::optional<std::string> array_size_problem(size_t begin, size_t end, bool initialized) const {
     static const std::set<std::string_view> kStarts = {"(", "-", "+", "!", "~"};
     if (begin < end && at(begin).kind == Token::punct && !kStarts.count(at(begin).text)) {
       return fmt::format("an array size cannot start with '{}'", at(begin).text);
     }
     for (size_t k = begin; k < end; ++k) {
       std::string_view s = at(k).text;
-      if (s == "," || s == "\\" || s == "@" || s == "$" || s == "`" || s == "#" || s == "'") {
+      if (s == "," || s == "\\" || s == "@" || s == "$" || s == "`" || s == "#" || s == "'" || s == "." ||
+          s == "=") {
         return fmt::format("an array size holds an unexpected '{}'", s);
       }
+
       if (k + 1 < end && at(k).kind != Token::punct && at(k + 1).kind != Token::punct) {
         return fmt::format("an array size has two operands in a row, the second '{}'", at(k + 1).text);
       }
     }
     if (begin < end && at(end - 1).kind == Token::punct && at(end - 1).text != ")") {
       return fmt::format("an array size cannot end with '{}'", at(end - 1).text);
+    }
+    for (size_t k = begin; initialized && k < end; ++k) {
+      if (at(k).kind == Token::ident && !known_.count(at(k).text) && !(k + 1 < end && at(k + 1).text == "(")) {
+        return fmt::format("undeclared identifier '{}' in the array size", at(k).text);
+      }
     }
     return std::nullopt;
   }
@@ -268,14 +346,17 @@ class Checker {
   const Tokens& t_;
   std::map<std::string, Declared> declared_;
   std::map<std::string, Declared> structs_;  // by name, where declared
+  std::set<std::string_view> known_;          // every name declared at the top level so far
+  std::set<std::string_view> seen_;           // every name the text has used so far
+  std::string_view entry_;
   std::optional<DeclarationProblem> problem_;
 };
 
 }  // namespace
 
-std::optional<DeclarationProblem> find_declaration_problem(std::string_view text) {
+std::optional<DeclarationProblem> find_declaration_problem(std::string_view text, std::string_view entry) {
   Tokens tokens = tokenize(text);
-  return Checker(tokens).run();
+  return Checker(tokens, entry).run();
 }
 
 }  // namespace facet::backend

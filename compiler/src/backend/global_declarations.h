@@ -5,6 +5,10 @@
 //                         (also "float4 f(v2f i) X;": glslang reads X as a
 //                         declarator of float4)
 //   struct S {...}; float S;  a global named like a struct
+//   float w[C+U] = {...};  an array size naming something undeclared
+//   return c ? a : X;     X never declared
+//   case 0: ...           a case label outside a switch
+//   RWStructuredBuffer<float4> vert(...)  an entry point returning a resource
 //   float a[t a];         an array size with two operands in a row
 //   float w[N * k);       a bracket closed by the wrong one
 // Internal to the backend stage.
@@ -26,7 +30,7 @@ struct DeclarationProblem {
 };
 
 // The first such problem of `text` (preprocessed: no comments, `#line N
-// "file"` markers), or nullopt.
-std::optional<DeclarationProblem> find_declaration_problem(std::string_view text);
+// "file"` markers), or nullopt. `entry`: the entry point's name, if any.
+std::optional<DeclarationProblem> find_declaration_problem(std::string_view text, std::string_view entry = {});
 
 }  // namespace facet::backend

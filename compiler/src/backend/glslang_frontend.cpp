@@ -336,8 +336,9 @@ std::optional<std::string> preprocessed_hlsl(const AssembledSource& source, ir::
 
 // True, with the error in `out`, when `text` holds a declaration glslang's
 // HLSL parser crashes on (global_declarations.h).
-bool refused_declaration(std::string_view text, const AssembledSource& source, GlslangOutput& out) {
-  std::optional<DeclarationProblem> problem = find_declaration_problem(text);
+bool refused_declaration(std::string_view text, std::string_view entry, const AssembledSource& source,
+                         GlslangOutput& out) {
+  std::optional<DeclarationProblem> problem = find_declaration_problem(text, entry);
   if (!problem) return false;
   std::string file = problem->file.empty() ? source.root_name : problem->file;
   out.parse_log = fmt::format("ERROR: {}:{}: '{}' : {}\n", file, problem->line, problem->token, problem->message);
@@ -356,7 +357,7 @@ GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage l
   const std::string* program_text = &source.text;
   if (is_hlsl(language)) {
     std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
-    if (!text || refused_declaration(*text, source, out)) return out;
+    if (!text || refused_declaration(*text, entry, source, out)) return out;
     hlsl = std::move(*text);
     program_text = &hlsl;
   }
@@ -390,7 +391,7 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
     if (stage == Stage::fragment) reduced = with_front_facing_as_bool(reduced, entry);
     out.preprocessed = std::move(*text);
     program_text = &reduced;
-    if (refused_declaration(reduced, source, out)) return out;
+    if (refused_declaration(reduced, entry, source, out)) return out;
   }
   glslang::TShader shader(to_glslang(stage));
   const char* text = program_text->c_str();

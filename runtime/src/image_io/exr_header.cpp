@@ -46,6 +46,31 @@ std::optional<std::string> data_window_problem(std::istream& file, const ImageLi
   return std::nullopt;
 }
 
+// A BITMAPINFOHEADER's planes, bits per pixel and compression, read after
+// its height. OpenImageIO 2.4 decodes any pairing and reads far out of
+// bounds on one that BMP does not define (RLE8 at 24 bits, found by
+// fuzz_image): only BMP's own pairings pass.
+std::optional<std::string> bmp_format_problem(std::istream& file) {
+  std::array<unsigned char, 4> planes_bits{};
+  if (!file.read(reinterpret_cast<char*>(planes_bits.data()), 4)) return std::string("the BMP file ends inside its header");
+  const uint32_t planes = planes_bits[0] | uint32_t(planes_bits[1]) << 8;
+  const uint32_t bits = planes_bits[2] | uint32_t(planes_bits[3]) << 8;
+  std::optional<uint32_t> compression = read_u32(file);
+  if (!compression) return std::string("the BMP file ends inside its header");
+  if (planes != 1) return fmt::format("the BMP header declares {} planes (BMP has 1)", planes);
+  constexpr uint32_t kRgb = 0, kRle8 = 1, kRle4 = 2, kBitfields = 3;
+  bool valid = false;
+  switch (*compression) {
+    case kRgb: valid = bits == 1 || bits == 4 || bits == 8 || bits == 16 || bits == 24 || bits == 32; break;
+    case kRle8: valid = bits == 8; break;
+    case kRle4: valid = bits == 4; break;
+    case kBitfields: valid = bits == 16 || bits == 32; break;
+    default: return fmt::format("the BMP header declares compression {}, which facet does not read", *compression);
+  }
+  if (!valid) return fmt::format("the BMP header declares {} bits a pixel with compression {}, a pairing BMP does not define", bits, *compression);
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLimits& limits) {
@@ -68,7 +93,7 @@ std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLim
   if (std::optional<std::string> problem = image_size_problem(uint64_t(width), uint64_t(height), limits)) {
     return "the BMP header: " + *problem;
   }
-  return std::nullopt;
+  return *header_size == 12 ? std::nullopt : bmp_format_problem(file);
 }
 
 bool is_exr(std::istream& file) {

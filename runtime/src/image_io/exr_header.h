@@ -28,7 +28,8 @@ bool is_exr(std::istream& file);
 std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_size, const ImageLimits& limits);
 
 // The same for a BMP's declared size (OpenImageIO decodes RLE-compressed
-// BMPs when it opens them); nullopt for a file that is not a BMP.
+// BMPs when it opens them), and its bits per pixel and compression, which
+// must be a pairing BMP defines; nullopt for a file that is not a BMP.
 std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLimits& limits);
 
 }  // namespace facet::runtime

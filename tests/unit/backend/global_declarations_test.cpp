@@ -46,9 +46,61 @@ TEST(GlobalDeclarationsTest, AnArraySizeMustReadAsAnExpression) {
     EXPECT_EQ(p->message, message) << text;
     EXPECT_EQ(p->token, "[") << text;
   }
-  for (const char* ok : {"float w[(N + 1) * 2];", "static const float w[-1 + N] = {1};", "float w[N][M];", "float w[];"}) {
+  for (const char* ok : {"float w[(N + 1) * 2];", "static const int N = 2; static const float w[-1 + N] = {1};", "float w[N][M];", "float w[];"}) {
     EXPECT_FALSE(find_declaration_problem(ok)) << ok;
   }
+}
+
+// Found by fuzz_hlsl (2026-12-06): glslang dereferences a null pointer in
+// convertInitializerList on these sizes before an initializer list.
+TEST(GlobalDeclarationsTest, AnInitializedArraysSizeNamesOnlyWhatIsDeclared) {
+  const std::pair<const char*, const char*> bad[] = {
+      {"static const float w[C + U] = {1, 2};", "undeclared identifier 'C' in the array size"},
+      {"static const float w[C =T] {1, 2};", "an array size holds an unexpected '='"},
+      {"static const float w[A.B] = {1, 2};", "an array size holds an unexpected '.'"},
+  };
+  for (const auto& [text, message] : bad) {
+    auto p = find_declaration_problem(text);
+    ASSERT_TRUE(p) << text;
+    EXPECT_EQ(p->message, message) << text;
+  }
+  for (const char* ok : {"static const int C = 2; cbuffer B { int U; }; static const float w[C + U] = {1, 2};",
+                         "float w[C + U];", "static const int N = 3; static const float w[(N)] = {1, 2, 3};"}) {
+    EXPECT_FALSE(find_declaration_problem(ok)) << ok;
+  }
+}
+
+// Found by fuzz_hlsl (2026-12-06): glslang crashes in handleReturnValue.
+TEST(GlobalDeclarationsTest, AnUndeclaredNameInAReturnedConditionIsRefused) {
+  auto p = find_declaration_problem("float4 f(bool b) {\n float4 c = 1;\n return b ? c : EXCOORD0c; }");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "undeclared identifier 'EXCOORD0c'");
+  EXPECT_EQ(p->line, 3u);
+  for (const char* ok : {"struct S { float4 v; }; float4 f(bool b, S s) { return b ? (half4)s.v : saturate(s.v); }",
+                         "float4 f(bool b, float4 c) { return b ? c : float4(0, 0, 0, 1); }",
+                         "bool f(bool b) { return b ? true : false; }"}) {
+    EXPECT_FALSE(find_declaration_problem(ok)) << ok;
+  }
+}
+
+// Found by fuzz_hlsl (2026-12-06): glslang crashes in wrapupSwitchSubsequence.
+TEST(GlobalDeclarationsTest, ACaseLabelOutsideASwitchIsRefused) {
+  auto p = find_declaration_problem("struct L { float3 c; float3 f(float3 n) { return c case 0: n; } };");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "'case' outside a switch statement");
+  EXPECT_FALSE(find_declaration_problem(
+      "int f(int x) { switch (x) { case 0: { if (x) { return 1; } } default: return 2; } return 0; }"));
+}
+
+// Found by fuzz_hlsl (2026-12-06): glslang crashes in handleAssign when the
+// entry point returns a buffer.
+TEST(GlobalDeclarationsTest, AnEntryPointReturningAResourceIsRefused) {
+  const char* text = "RWStructuredBuffer<float4> _U vert(float4 p : POSITION) : SV_Position { return p; }";
+  auto p = find_declaration_problem(text, "vert");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "the entry point 'vert' returns a 'RWStructuredBuffer<float4>'; an entry point returns "
+                        "values or structs, not resource objects");
+  EXPECT_FALSE(find_declaration_problem(text, "frag"));
 }
 
 TEST(GlobalDeclarationsTest, WhatGlslangTakesIsNoProblem) {

@@ -399,6 +399,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
 // dataWindow the walk can read is now refused. A local run afterwards found
 // the JPEG walk itself calling memcmp with a null pointer on an empty APP13
 // marker (UBSan), which OpenImageIO's strcmp would read past: refused too.
+// A 16-worker run on 2026-12-06 found a BMP declaring RLE8 compression at
+// 24 bits a pixel, which OpenImageIO decodes out of bounds (SEGV); BMP's
+// own pairings of bits and compression are checked first now.
 struct FuzzFoundImage {
   const char* file;
   const char* expected;
@@ -421,6 +424,9 @@ INSTANTIATE_TEST_SUITE_P(
     Inputs, FuzzFoundImages,
     ::testing::Values(FuzzFoundImage{"bmp-rle-738197508-rows.bmp", "the BMP header: the image is 4x738197508 pixels"},
                       FuzzFoundImage{"bmp-rle-tall-2.bmp", "the BMP header: "},
+                      FuzzFoundImage{"bmp-rle8-at-24-bits.bmp",
+                                     "the BMP header declares 24 bits a pixel with compression 1, a pairing BMP does "
+                                     "not define"},
                       FuzzFoundImage{"exr-data-window-50331655-wide.exr", "the EXR dataWindow: the image is "},
                       FuzzFoundImage{"exr-slow-data-window.exr", "the EXR dataWindow: the image is "},
                       FuzzFoundImage{"exr-data-window-only-openexr-finds.exr",
