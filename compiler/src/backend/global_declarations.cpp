@@ -257,16 +257,23 @@ class Checker {
                                         name.text, type));
         }
         // A function's declaration: after its ')' and semantic comes its
-        // body or ';'. glslang reads a name there as another declarator of
-        // the type and crashes when the name is taken ("float4 f(v2f i)
-        // appdata {" with a struct appdata, "... : SV_Targe sampler_X;").
+        // body or ';'. glslang reads a name or ", name" there as another
+        // declarator of the type and crashes when the name is taken
+        // ("float4 f(v2f i) appdata {" with a struct appdata, "... :
+        // SV_Targe sampler_X;", "... : S, V half S;").
+        const size_t open_paren = i;
         for (int paren = 0; i < end; ++i) {
           paren += at(i).text == "(" ? 1 : at(i).text == ")" ? -1 : 0;
           if (paren == 0) break;
         }
+        if (name.text == entry_ && i < end) {
+          if (std::optional<size_t> unnamed = unnamed_parameter(open_paren + 1, i)) {
+            return fail(at(*unnamed), fmt::format("a parameter of the entry point '{}' has no name", name.text));
+          }
+        }
         ++i;
         if (i + 1 < end && at(i).text == ":" && at(i + 1).kind == Token::ident) i += 2;
-        if (i < end && at(i).kind == Token::ident) {
+        if (i < end) {
           return fail(at(i), fmt::format("unexpected '{}' after the declaration of function '{}'; a function's "
                                          "parameters are followed by its body or ';'",
                                          at(i).text, name.text));
@@ -281,7 +288,8 @@ class Checker {
           if (bracket == 0) break;
         }
         // A '{' ends the statement when an initializer list follows.
-        bool initialized = end < t_.list.size() && at(end).text == "{";
+        // A static const array is initialized even without one.
+        bool initialized = (end < t_.list.size() && at(end).text == "{") || local;
         if (std::optional<std::string> problem = array_size_problem(i + 1, close, initialized)) {
           return fail(at(i), *problem);
         }
@@ -302,8 +310,36 @@ class Checker {
 
   // An array size glslang can parse without crashing: no stray character or
   // ',', a start and an end an expression may have, no two operands in a row.
-  // With an initializer list (`initialized`), glslang also crashes on a
-  // size naming something undeclared ("w[C+U] = {...}").
+  // The first token of a parameter in [begin, end) (a function's parameter
+  // list) that has a type but no name ("uint : SV_VertexID"); glslang's
+  // entry-point rewriting crashes on one.
+  std::optional<size_t> unnamed_parameter(size_t begin, size_t end) const {
+    static const std::set<std::string_view> kParameterQualifiers = {
+        "in", "out", "inout", "uniform", "const", "precise", "nointerpolation", "linear", "centroid", "noperspective",
+        "sample", "point", "line", "triangle", "lineadj", "triangleadj", "vertices", "indices", "primitives", "payload"};
+    for (size_t k = begin; k < end;) {
+      size_t first = k;
+      while (k < end && kParameterQualifiers.count(at(k).text)) ++k;
+      if (k >= end || at(k).kind != Token::ident) return std::nullopt;  // not a form this reads
+      ++k;
+      for (int angle = 0; k < end && (angle > 0 || at(k).text == "<"); ++k) {
+        angle += at(k).text == "<" ? 1 : at(k).text == ">" ? -1 : 0;
+      }
+      if (at(first).text == "void" && k == first + 1 && k >= end) return std::nullopt;  // "f(void)"
+      if (k >= end || at(k).kind != Token::ident) return first;
+      for (int nesting = 0; k < end; ++k) {  // to the next parameter
+        std::string_view s = at(k).text;
+        nesting += (s == "(" || s == "[" || s == "<") ? 1 : (s == ")" || s == "]" || s == ">") ? -1 : 0;
+        if (nesting == 0 && s == ",") break;
+      }
+      ++k;
+    }
+    return std::nullopt;
+  }
+
+  // With an initializer list, or as a static const (`initialized`), glslang
+  // also crashes on a size naming something undeclared ("w[C+U] = {...}",
+  // "static const float w[C&U];").
   std::optional<std::string> array_size_problem(size_t begin, size_t end, bool initialized) const {
     static const std::set<std::string_view> kStarts = {"(", "-", "+", "!", "~"};
     if (begin < end && at(begin).kind == Token::punct && !kStarts.count(at(begin).text)) {

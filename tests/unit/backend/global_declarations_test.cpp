@@ -103,6 +103,38 @@ TEST(GlobalDeclarationsTest, AnEntryPointReturningAResourceIsRefused) {
   EXPECT_FALSE(find_declaration_problem(text, "frag"));
 }
 
+// Found by fuzz_hlsl (2026-12-06, second run): glslang crashes in
+// remapEntryPointIO on an unnamed parameter of the entry point, in
+// growGlobalUniformBlock on ", name" after a function's semantic, and in
+// convertInitializerList on a static const array sized by undeclared names.
+TEST(GlobalDeclarationsTest, AnEntryPointsParametersAreNamed) {
+  auto p = find_declaration_problem("float4 vert(uint : SV_VertexID) : SV_Position { return 0; }", "vert");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "a parameter of the entry point 'vert' has no name");
+  for (const char* ok : {"float4 vert(void) : SV_Position { return 0; }", "float4 vert() : SV_Position { return 0; }",
+                         "struct v2g { float4 p; }; struct g2f { float4 p; };\n"
+                         "void vert(triangle v2g IN[3], inout TriangleStream<g2f> s, uint id : SV_PrimitiveID) {}",
+                         "struct v2h { float4 p; }; float4 vert(InputPatch<v2h, 3> patch, uint i : SV_OutputControlPointID) "
+                         ": SV_Position { return 0; }"}) {
+    EXPECT_FALSE(find_declaration_problem(ok, "vert")) << ok;
+  }
+  EXPECT_FALSE(find_declaration_problem("float f(float) { return 0; }", "vert"));
+}
+
+TEST(GlobalDeclarationsTest, NothingFollowsAFunctionsSemanticButItsBody) {
+  auto p = find_declaration_problem("half S;\nfloat4 vert(float4 p : POSITION) : S, V_Position\nhalf _G S;");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "unexpected ',' after the declaration of function 'vert'; a function's parameters are "
+                        "followed by its body or ';'");
+}
+
+TEST(GlobalDeclarationsTest, AStaticConstArraysSizeNamesOnlyWhatIsDeclared) {
+  auto p = find_declaration_problem("static const float w[C & OUNT];");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->message, "undeclared identifier 'C' in the array size");
+  EXPECT_FALSE(find_declaration_problem("float w[C & OUNT];"));
+}
+
 TEST(GlobalDeclarationsTest, WhatGlslangTakesIsNoProblem) {
   for (const char* ok : {"float4 X; float4 X;", "half4 X; float4 X;", "static float X; static float X;",
                          "struct S { float4 X; }; float X;", "Texture2D<float4> T; SamplerState s;",

@@ -515,6 +515,25 @@ TEST(PngChunkControl, ATextChunkRendersAndOneDeclaringTooMuchIsRefused) {
   }
 }
 
+// The control of the BMP format check: a 24-bit BMP as oiiotool writes it
+// renders; the same file declaring RLE8 compression (which BMP defines for
+// 8 bits a pixel only) is refused before OpenImageIO decodes it.
+TEST(BmpFormatControl, A24BitBmpRendersAndOneDeclaringRle8IsRefused) {
+  std::ifstream in(std::string(FACET_SOURCE_DIR) + "/tests/fuzz/corpus/image/small.bmp", std::ios::binary);
+  const std::string bmp{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_GT(bmp.size(), 34u);
+  expect_textured_render("bmp_24", write_file("bmp_24.bmp", bmp));
+  std::string rle8 = bmp;
+  rle8[30] = 1;  // biCompression: BI_RLE8
+  std::string file = write_file("bmp_rle8_24.bmp", rle8);
+  Outcome refused = render_expecting_failure("bmp_rle8_24", write_scene("bmp_rle8_24", textured_scene(file)));
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find(file + ": the BMP header declares 24 bits a pixel with compression 1, a pairing BMP "
+                                    "does not define"),
+            std::string::npos)
+      << refused.err;
+}
+
 // The negative control: the real file renders, so the header walk passes
 // what OpenEXR writes and the cases above fail for their attribute alone.
 TEST(HostileExrControl, TheRealExrRenders) {
