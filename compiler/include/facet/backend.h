@@ -94,6 +94,7 @@ struct BackendOptions {
 //   auto glsl = backend::cross_compile(fs->spirv, Stage::fragment, backend::CrossTarget::glsl450, diags);
 //   nlohmann::json j = fs->reflection;     // facet/reflection_json.h
 class IncludeScanCache;
+class CrashIsolation;
 
 // Which text Backend::source_text gives: one stage of one variant.
 struct SourceRequest {
@@ -124,10 +125,22 @@ class Backend {
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
                                 SourceMap& sources, Diagnostics& diags) const;
 
+  // Parses `program` as its fragment stage would be parsed (prelude, includes,
+  // `keywords` and `extra_defines` defined) and reads the AST
+  // (facet/program_analysis.h); nothing is compiled to SPIR-V. Parse errors are
+  // reported at .shader positions.
+  Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
+                                          const std::vector<std::string>& keywords, const BackendOptions& options,
+                                          SourceMap& sources, Diagnostics& diags) const;
+
  private:
   // The scans of included texts, shared by every program this Backend
   // preprocesses or compiles (include_scan.h).
   std::shared_ptr<IncludeScanCache> scan_cache_;
+  // Where glslang parses HLSL: a helper process forked when the Backend is
+  // made, whose children die of glslang's crashes instead of the compiler
+  // (crash_isolation.h).
+  std::unique_ptr<CrashIsolation> isolation_;
 };
 
 // Compiles a self-contained HLSL compute shader (DX9 compatibility, as for
@@ -152,15 +165,6 @@ std::string to_half_precision(std::string_view hlsl);
 // return 32-bit floats only), which is returned as written. nullopt when the
 // file is not there.
 IncludeResolver half_precision_stdlib(const std::string& stdlib_dir);
-
-// Parses `program` as its fragment stage would be parsed (prelude, includes,
-// `keywords` and `extra_defines` defined) and reads the AST
-// (facet/program_analysis.h); nothing is compiled to SPIR-V. Parse errors are
-// reported at .shader positions. Call while a Backend exists (it owns
-// glslang's process initialisation).
-Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
-                                        const std::vector<std::string>& keywords, const BackendOptions& options,
-                                        SourceMap& sources, Diagnostics& diags);
 
 // The stdlib folder used when BackendOptions::stdlib_dir is empty: $FACET_STDLIB_DIR,
 // else the source tree's stdlib/ (a build tree), else the installed one.

@@ -1,6 +1,6 @@
 // What an HLSL program's code declares and touches: its functions, their
 // parameters, and which members of each struct parameter a function reads and
-// writes. The backend reads it from glslang's AST (backend::analyze_program,
+// writes. The backend reads it from glslang's AST (backend::Backend::analyze_program,
 // facet/backend.h); surface-shader lowering consumes it to learn which Input
 // fields `surf` reads and which outputs it writes, and which form a lighting
 // function has, from the code rather than by guessing. Plain data, so that

@@ -16,7 +16,7 @@ namespace facet::surface {
 
 // Reads what a program's code declares, as its fragment stage would be
 // parsed, reporting parse errors at .shader positions. The driver passes the
-// backend's (backend::analyze_program); this stage parses no HLSL itself.
+// backend's (backend::Backend::analyze_program); this stage parses no HLSL itself.
 using ProgramAnalyzer =
     std::function<Result<ProgramAnalysis>(const ir::Shader& shader, const ir::Program& program, SourceMap& sources,
                                           Diagnostics& diags)>;

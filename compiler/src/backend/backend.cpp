@@ -12,8 +12,10 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <string_view>
 
 #include "argument_casts.h"
+#include "crash_isolation.h"
 #include "glslang_frontend.h"
 #include "hlsl_rewrite.h"
 #include "include_scan.h"
@@ -139,9 +141,22 @@ std::string default_stdlib_dir() {
 #endif
 }
 
-Backend::Backend() : scan_cache_(std::make_shared<IncludeScanCache>()) { glslang::InitializeProcess(); }
+// The helper process is forked after glslang has built its symbol tables,
+// so that its children start with them (glslang_frontend.h).
+// FACET_GLSLANG_IN_PROCESS=1 keeps glslang in this process: to debug it,
+// or for a fuzzer to find where it crashes.
+Backend::Backend() : scan_cache_(std::make_shared<IncludeScanCache>()) {
+  glslang::InitializeProcess();
+  const char* in_process = std::getenv("FACET_GLSLANG_IN_PROCESS");
+  if (in_process && std::string_view(in_process) == "1") return;
+  warm_glslang_symbol_tables(BackendOptions{});
+  isolation_ = std::make_unique<CrashIsolation>();
+}
 
-Backend::~Backend() { glslang::FinalizeProcess(); }
+Backend::~Backend() {
+  isolation_.reset();  // its children run glslang
+  glslang::FinalizeProcess();
+}
 
 namespace {
 
@@ -321,7 +336,8 @@ constexpr int kMaxRetries = 16;
 Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Program& program, Stage stage,
                                     const std::vector<std::string>& keywords, const BackendOptions& options,
                                     SourceMap& sources, Diagnostics& diags,
-                                    const std::shared_ptr<IncludeScanCache>& scan_cache) {
+                                    const std::shared_ptr<IncludeScanCache>& scan_cache,
+                                    const CrashIsolation* isolation) {
   Result<std::string> entry = entry_point(program, stage, diags);
   if (!entry) return unexpected(entry.error());
   size_t errors_before = diags.error_count();
@@ -329,7 +345,7 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
   std::unique_ptr<FileIncluder> includer =
       checked_includer(program, source, options, stdlib_dir(options), diags, scan_cache);
   if (!includer) return failure("input limit");
-  GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, *includer);
+  GlslangOutput out = run_glslang(source, program.language, stage, *entry, options, *includer, isolation);
   // fxc truncates a wider vector argument (X3206) where glslang finds no
   // overload: retry with the arguments cast, and warn at each call.
   // Likewise an assignment to a global uniform, which fxc turns into a write
@@ -363,7 +379,8 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
     if (!retry_includer) break;
     retry_includer->set_assigned_uniforms(all_assigned);
     retry_includer->set_overrides(retry_overrides);
-    GlslangOutput retry_out = run_glslang(retry_source, retry.language, stage, *entry, options, *retry_includer);
+    GlslangOutput retry_out =
+        run_glslang(retry_source, retry.language, stage, *entry, options, *retry_includer, isolation);
     // Keep a retry that fixed what it rewrote, even if a later call (glslang
     // stops at the first error of a function) now fails: the next round
     // rewrites that one.
@@ -425,7 +442,8 @@ Result<CompiledVariant> Backend::compile(const ir::Shader& shader, const ir::Pro
   std::string timeout = time_limit_message(program, stage, options, sources);
   std::optional<Result<CompiledVariant>> result;
   run_on_worker([&, scan_cache = scan_cache_] {
-                  result = compile_stage(shader, program, stage, keywords, options, sources, diags, scan_cache);
+                  result = compile_stage(shader, program, stage, keywords, options, sources, diags, scan_cache,
+                                         isolation_.get());
                 },
                 options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);

@@ -1,5 +1,6 @@
 #include "glslang_frontend.h"
 
+#include "crash_isolation.h"
 #include "global_declarations.h"
 #include "hlsl_rewrite.h"
 #include "facet/reachability.h"
@@ -308,13 +309,13 @@ std::string without_spaced_member_dots(const std::string& text) {
 // argument (fixed upstream later). An exception is the program's error, not
 // a crash of the compiler.
 template <class F>
-bool without_throwing(GlslangOutput& out, const AssembledSource& source, std::string_view step, F&& run) {
+bool without_throwing(GlslangOutput& out, std::string_view root_name, std::string_view step, F&& run) {
   try {
     return run();
   } catch (const std::exception& e) {
     out.parse_log += fmt::format("ERROR: {}:0: '{}' : glslang failed in its {} ({}), a glslang bug; rewriting the "
                                  "construct it fails on (an empty macro argument, for one) may avoid it\n",
-                                 source.root_name, step, step, e.what());
+                                 root_name, step, step, e.what());
     return false;
   }
 }
@@ -345,67 +346,40 @@ bool refused_declaration(std::string_view text, std::string_view entry, const As
   return true;
 }
 
-}  // namespace
+// One text for glslang and what to do with it.
+struct GlslangJob {
+  bool parse_only = false;  // no link, no SPIR-V
+  ir::ProgramLanguage language = ir::ProgramLanguage::hlsl;
+  Stage stage = Stage::vertex;
+  std::string entry;
+  std::string name;  // the root file's name in glslang's log
+  std::string text;
+};
 
-GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
-                            const std::string& entry, const BackendOptions& options, FileIncluder& includer,
-                            const std::function<void(const glslang::TIntermediate&)>& visit) {
+// Parses the job's text (`visit`, when set, walks the AST of a successful
+// parse), then unless parse_only links it and generates SPIR-V.
+GlslangOutput run_job(const GlslangJob& job, const BackendOptions& options, glslang::TShader::Includer& includer,
+                      const std::function<void(const glslang::TIntermediate&)>& visit) {
   GlslangOutput out;
-  // HLSL is parsed as run_glslang parses it, preprocessed and checked first:
-  // the parser would crash on the declarations the check refuses.
-  std::string hlsl;
-  const std::string* program_text = &source.text;
-  if (is_hlsl(language)) {
-    std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
-    if (!text || refused_declaration(*text, entry, source, out)) return out;
-    hlsl = std::move(*text);
-    program_text = &hlsl;
-  }
-  glslang::TShader shader(to_glslang(stage));
-  const char* text = program_text->c_str();
-  const int length = int(program_text->size());
-  const char* name = source.root_name.c_str();
+  EShMessages messages = messages_for(job.language, options);
+  glslang::TShader shader(to_glslang(job.stage));
+  const char* text = job.text.c_str();
+  const int length = int(job.text.size());
+  const char* name = job.name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
-  configure(shader, language, stage, entry, options);
-  out.ok = without_throwing(out, source, "parser", [&] {
-    return shader.parse(GetDefaultResources(), default_version(language), false, messages_for(language, options),
-                        includer);
-  });
-  out.parse_log = shader.getInfoLog() + out.parse_log;
-  if (out.ok) visit(*shader.getIntermediate());
-  return out;
-}
-
-GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
-                          const std::string& entry, const BackendOptions& options, FileIncluder& includer) {
-  GlslangOutput out;
-  EShMessages messages = messages_for(language, options);
-  // HLSL: preprocessed first, and only what the entry point reaches is
-  // compiled, as fxc does (with -g the module embeds the source as written).
-  std::string reduced;
-  const std::string* program_text = &source.text;
-  if (is_hlsl(language) && !options.debug_info) {
-    std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
-    if (!text) return out;
-    reduced = with_static_initializers_in_entry(without_unreachable_functions(*text, entry), entry);
-    if (stage == Stage::fragment) reduced = with_front_facing_as_bool(reduced, entry);
-    out.preprocessed = std::move(*text);
-    program_text = &reduced;
-    if (refused_declaration(reduced, entry, source, out)) return out;
-  }
-  glslang::TShader shader(to_glslang(stage));
-  const char* text = program_text->c_str();
-  const int length = int(program_text->size());
-  const char* name = source.root_name.c_str();
-  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
-  configure(shader, language, stage, entry, options);
-  bool parsed = without_throwing(out, source, "parser", [&] {
-    return shader.parse(GetDefaultResources(), default_version(language), false, messages, includer);
+  configure(shader, job.language, job.stage, job.entry, options);
+  bool parsed = without_throwing(out, job.name, "parser", [&] {
+    return shader.parse(GetDefaultResources(), default_version(job.language), false, messages, includer);
   });
   out.parse_log = shader.getInfoLog() + out.parse_log;
   if (!parsed) return out;
-  if (is_hlsl(language)) {
-    std::string missing = missing_stage_attribute(*shader.getIntermediate(), stage, entry);
+  if (visit) visit(*shader.getIntermediate());
+  if (job.parse_only) {
+    out.ok = true;
+    return out;
+  }
+  if (is_hlsl(job.language)) {
+    std::string missing = missing_stage_attribute(*shader.getIntermediate(), job.stage, job.entry);
     if (!missing.empty()) {
       out.parse_log += missing;
       return out;
@@ -416,7 +390,7 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   // The program must die before the shader it links (glslang's rule).
   auto program = std::make_unique<glslang::TProgram>();
   program->addShader(&shader);
-  bool linked = without_throwing(out, source, "linker", [&] { return program->link(messages) && program->mapIO(); });
+  bool linked = without_throwing(out, job.name, "linker", [&] { return program->link(messages) && program->mapIO(); });
   out.link_log = program->getInfoLog();
   if (!linked) return out;
 
@@ -428,13 +402,157 @@ GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage lan
   spv_options.disableOptimizer = true;
   spv_options.validate = false;
   spv::SpvBuildLogger logger;
-  without_throwing(out, source, "SPIR-V generator", [&] {
-    glslang::GlslangToSpv(*program->getIntermediate(to_glslang(stage)), out.spirv, &logger, &spv_options);
+  without_throwing(out, job.name, "SPIR-V generator", [&] {
+    glslang::GlslangToSpv(*program->getIntermediate(to_glslang(job.stage)), out.spirv, &logger, &spv_options);
     return true;
   });
   out.spirv_log = logger.getAllMessages();
   out.ok = !out.spirv.empty();
   return out;
+}
+
+// ---- The same in a child process (crash_isolation.h) ----------------------
+
+// Only what run_job reads of the options crosses: the target (a child's
+// job is never compiled with -g, whose source embeds the #include'd files).
+std::string encode_job(const GlslangJob& job, const BackendOptions& options) {
+  WireWriter w;
+  w.byte(job.parse_only ? 1 : 0);
+  w.byte(uint8_t(job.language));
+  w.byte(uint8_t(job.stage));
+  w.byte(uint8_t(options.target));
+  w.text(job.entry);
+  w.text(job.name);
+  w.text(job.text);
+  return w.take();
+}
+
+std::string encode_output(const GlslangOutput& out) {
+  WireWriter w;
+  w.byte(out.ok ? 1 : 0);
+  w.text(out.parse_log);
+  w.text(out.link_log);
+  w.text(out.spirv_log);
+  w.words(out.spirv);
+  w.u32(uint32_t(out.declared.size()));
+  for (const DeclaredResource& r : out.declared) {
+    w.text(r.key);
+    w.byte(r.block ? 1 : 0);
+    w.byte(r.has_set ? 1 : 0);
+    w.byte(r.has_binding ? 1 : 0);
+    w.u32(r.set);
+    w.u32(r.binding);
+  }
+  return w.take();
+}
+
+std::optional<GlslangOutput> decode_output(std::string_view bytes) {
+  WireReader r(bytes);
+  GlslangOutput out;
+  out.ok = r.byte() != 0;
+  out.parse_log = r.text();
+  out.link_log = r.text();
+  out.spirv_log = r.text();
+  out.spirv = r.words();
+  uint32_t count = r.u32();
+  for (uint32_t i = 0; i < count && r.ok(); ++i) {
+    DeclaredResource d;
+    d.key = r.text();
+    d.block = r.byte() != 0;
+    d.has_set = r.byte() != 0;
+    d.has_binding = r.byte() != 0;
+    d.set = r.u32();
+    d.binding = r.u32();
+    out.declared.push_back(std::move(d));
+  }
+  if (!r.at_end()) return std::nullopt;
+  return out;
+}
+
+// The child's side: the text needs no #include (it is preprocessed).
+std::string run_job_in_child(std::string_view request) {
+  WireReader r(request);
+  GlslangJob job;
+  BackendOptions options;
+  job.parse_only = r.byte() != 0;
+  job.language = ir::ProgramLanguage(r.byte());
+  job.stage = Stage(r.byte());
+  options.target = TargetEnv(r.byte());
+  job.entry = r.text();
+  job.name = r.text();
+  job.text = r.text();
+  if (!r.at_end()) return {};
+  glslang::TShader::ForbidIncluder no_includes;
+  return encode_output(run_job(job, options, no_includes, {}));
+}
+
+// run_job in a child; nullopt when no child could be started. A child that
+// died is the program's error, located at its start: where glslang was
+// when it crashed is lost with the child.
+std::optional<GlslangOutput> run_job_isolated(const CrashIsolation& isolation, const GlslangJob& job,
+                                              const BackendOptions& options) {
+  ChildAnswer answer = isolation.run(run_job_in_child, encode_job(job, options), options.limits.time_limit_s);
+  if (answer.kind == ChildAnswer::Kind::unavailable) return std::nullopt;
+  if (answer.kind == ChildAnswer::Kind::answered) {
+    if (std::optional<GlslangOutput> out = decode_output(answer.bytes)) return out;
+  }
+  GlslangOutput out;
+  out.parse_log = fmt::format(
+      "ERROR: {}:0: '{}' : glslang crashed on this program, a glslang bug (facet ran it in a child process and "
+      "refuses the program instead); simplifying the code of the '{}' stage may avoid it\n",
+      job.name, job.entry, stage_name(job.stage));
+  return out;
+}
+
+}  // namespace
+
+GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                            const std::string& entry, const BackendOptions& options, FileIncluder& includer,
+                            const std::function<void(const glslang::TIntermediate&)>& visit,
+                            const CrashIsolation* isolation) {
+  GlslangJob job{true, language, stage, entry, source.root_name, {}};
+  if (!is_hlsl(language)) {
+    job.text = source.text;
+    return run_job(job, options, includer, visit);
+  }
+  // HLSL is parsed as run_glslang parses it, preprocessed and checked first:
+  // the parser would crash on the declarations the check refuses. Then in a
+  // child, for the crashes no check foresees; only a program the child
+  // parsed is parsed here again, for `visit` to walk its AST.
+  GlslangOutput out;
+  std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
+  if (!text || refused_declaration(*text, entry, source, out)) return out;
+  job.text = std::move(*text);
+  if (isolation) {
+    std::optional<GlslangOutput> checked = run_job_isolated(*isolation, job, options);
+    if (checked && !checked->ok) return std::move(*checked);
+  }
+  return run_job(job, options, includer, visit);
+}
+
+GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
+                          const std::string& entry, const BackendOptions& options, FileIncluder& includer,
+                          const CrashIsolation* isolation) {
+  GlslangJob job{false, language, stage, entry, source.root_name, {}};
+  // HLSL: preprocessed first, and only what the entry point reaches is
+  // compiled, as fxc does (with -g the module embeds the source as written,
+  // #include'd files and all, so it is compiled here, not in a child).
+  if (!is_hlsl(language) || options.debug_info) {
+    job.text = source.text;
+    return run_job(job, options, includer, {});
+  }
+  GlslangOutput out;
+  std::optional<std::string> text = preprocessed_hlsl(source, language, stage, options, includer, out);
+  if (!text) return out;
+  job.text = with_static_initializers_in_entry(without_unreachable_functions(*text, entry), entry);
+  if (stage == Stage::fragment) job.text = with_front_facing_as_bool(job.text, entry);
+  out.preprocessed = std::move(*text);
+  if (refused_declaration(job.text, entry, source, out)) return out;
+  std::optional<GlslangOutput> isolated;
+  if (isolation) isolated = run_job_isolated(*isolation, job, options);
+  GlslangOutput result = isolated ? std::move(*isolated) : run_job(job, options, includer, {});
+  result.preprocessed = std::move(out.preprocessed);
+  return result;
 }
 
 GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
@@ -446,12 +564,26 @@ GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLangu
   const char* name = source.root_name.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure(shader, language, stage, "main", options);
-  out.ok = without_throwing(out, source, "preprocessor", [&] {
+  out.ok = without_throwing(out, source.root_name, "preprocessor", [&] {
     return shader.preprocess(GetDefaultResources(), default_version(language), ENoProfile, false, false,
                              messages_for(language, options), &out.preprocessed, includer);
   });
   out.parse_log = shader.getInfoLog() + out.parse_log;
   return out;
+}
+
+void warm_glslang_symbol_tables(const BackendOptions& options) {
+  constexpr ir::ProgramLanguage hlsl = ir::ProgramLanguage::hlsl;
+  for (Stage stage : {Stage::vertex, Stage::fragment}) {
+    glslang::TShader shader(to_glslang(stage));
+    const char* text = "";
+    shader.setStrings(&text, 1);
+    configure(shader, hlsl, stage, "main", options);
+    std::string preprocessed;
+    glslang::TShader::ForbidIncluder no_includes;
+    shader.preprocess(GetDefaultResources(), default_version(hlsl), ENoProfile, false, false,
+                      messages_for(hlsl, options), &preprocessed, no_includes);
+  }
 }
 
 std::string glsl_errors(const std::string& text, Stage stage) {

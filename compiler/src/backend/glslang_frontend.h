@@ -18,6 +18,8 @@ class TIntermediate;
 
 namespace facet::backend {
 
+class CrashIsolation;
+
 // A uniform resource (texture, sampler, cbuffer, the "$Global" block) as
 // declared, in declaration order. `key` is the variable name, or the block's
 // type name for blocks (how the SPIR-V fix-ups find it again).
@@ -41,14 +43,27 @@ struct GlslangOutput {
 };
 
 // Compiles `source` for `stage` with entry point `entry` ("main" for GLSL).
+// With `isolation`, HLSL (preprocessed here) is parsed, linked and turned
+// into SPIR-V in a child process: a glslang crash becomes an error in the
+// parse log. GLSL, and HLSL with debug_info, are compiled in this process.
 GlslangOutput run_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
-                          const std::string& entry, const BackendOptions& options, FileIncluder& includer);
+                          const std::string& entry, const BackendOptions& options, FileIncluder& includer,
+                          const CrashIsolation* isolation);
 
 // Parses only, then hands the AST to `visit` while it is alive; ok when the
 // parse succeeded. For reading the code's structure (program_analysis.h).
+// With `isolation`, HLSL is parsed in a child process first, and here only
+// when the child parsed it.
 GlslangOutput parse_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
                             const std::string& entry, const BackendOptions& options, FileIncluder& includer,
-                            const std::function<void(const glslang::TIntermediate&)>& visit);
+                            const std::function<void(const glslang::TIntermediate&)>& visit,
+                            const CrashIsolation* isolation);
+
+// Builds glslang's built-in symbol tables of HLSL vertex and fragment
+// programs for `options`' target, which glslang keeps for the process: a
+// child process forked afterwards (crash_isolation.h) starts with them
+// instead of building them for each program.
+void warm_glslang_symbol_tables(const BackendOptions& options);
 
 // Only the preprocessor; `preprocessed` holds the text when ok.
 GlslangOutput preprocess_glslang(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,

@@ -1,6 +1,7 @@
 // analyze_program: glslang's AST of a parsed (not compiled) program, walked
 // once for function signatures and struct-member reads and writes.
 #include "facet/backend.h"
+#include "crash_isolation.h"
 #include "facet/support/text.h"
 
 #include <glslang/Include/intermediate.h>
@@ -189,7 +190,7 @@ namespace {
 // analyze_program, on the worker thread.
 Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& program,
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
-                                SourceMap& sources, Diagnostics& diags) {
+                                SourceMap& sources, Diagnostics& diags, const CrashIsolation* isolation) {
   std::string path = shader.file != kNoFile && shader.file < sources.file_count() ? sources.path(shader.file) : "";
   std::string stdlib = options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir;
   ProgramAnalysis analysis;
@@ -201,7 +202,8 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
                          [&](const glslang::TIntermediate& intermediate) {
                            Walker walker(analysis);
                            if (TIntermNode* root = intermediate.getTreeRoot()) root->traverse(&walker);
-                         });
+                         },
+                         isolation);
   };
   AssembledSource source;
   source = assemble_source(program, Stage::fragment, keywords, options, path);
@@ -236,13 +238,14 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
 
 }  // namespace
 
-Result<ProgramAnalysis> analyze_program(const ir::Shader& shader, const ir::Program& program,
-                                        const std::vector<std::string>& keywords, const BackendOptions& options,
-                                        SourceMap& sources, Diagnostics& diags) {
+Result<ProgramAnalysis> Backend::analyze_program(const ir::Shader& shader, const ir::Program& program,
+                                                 const std::vector<std::string>& keywords,
+                                                 const BackendOptions& options, SourceMap& sources,
+                                                 Diagnostics& diags) const {
   std::optional<Result<ProgramAnalysis>> result;
   std::string timeout = fmt::format("facet: error: analysing a program took longer than {} s (--time-limit)\n",
                                     options.limits.time_limit_s);
-  run_on_worker([&] { result = analyze(shader, program, keywords, options, sources, diags); },
+  run_on_worker([&] { result = analyze(shader, program, keywords, options, sources, diags, isolation_.get()); },
                 options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);
 }

@@ -22,8 +22,8 @@ Result<ir::Shader> Compiler::load_source(const std::string& path, std::string te
   FACET_TRY(ast);
   auto shader = sema::analyze(*ast, sources, {}, diags);
   FACET_TRY(shader);
-  auto analyze = [&options](const ir::Shader& s, const ir::Program& program, SourceMap& sm, Diagnostics& d) {
-    return backend::analyze_program(s, program, {}, options.backend, sm, d);
+  auto analyze = [this, &options](const ir::Shader& s, const ir::Program& program, SourceMap& sm, Diagnostics& d) {
+    return backend_.analyze_program(s, program, {}, options.backend, sm, d);
   };
   auto lowered = surface::lower_surface_shaders(*shader, analyze, sources, diags);
   FACET_TRY(lowered);
