@@ -1,6 +1,8 @@
 #include "crash_isolation.h"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -8,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <exception>
+#include <mutex>
 
 #include "worker.h"
 
@@ -23,16 +26,19 @@ namespace {
 // The zygote's end of its request socket, moved to a fixed number.
 constexpr int kControlFd = 3;
 
+// Precedes each request on a worker's connection.
 struct RequestHeader {
   CrashIsolation::Handler handler;
   uint32_t time_limit_s;
+  uint64_t size;  // of the request's bytes, which follow
 };
 
 // An answer's first byte: what follows.
 constexpr char kAnswered = 'R';     // a u64 length, then the handler's bytes
-constexpr char kUnavailable = 'U';  // the zygote could not fork
+constexpr char kUnavailable = 'U';  // the zygote could not fork a worker
 
-bool write_all(int fd, const char* data, size_t size) {
+bool write_all(int fd, const void* bytes, size_t size) {
+  const char* data = static_cast<const char*>(bytes);
   while (size > 0) {
     ssize_t n = send(fd, data, size, MSG_NOSIGNAL);
     if (n < 0 && errno == EINTR) continue;
@@ -43,20 +49,32 @@ bool write_all(int fd, const char* data, size_t size) {
   return true;
 }
 
-bool read_all(int fd, std::string& out) {
-  char buffer[65536];
-  for (;;) {
-    ssize_t n = read(fd, buffer, sizeof buffer);
+// False at the end of the stream (or on an error) before `size` bytes.
+bool read_exact(int fd, void* bytes, size_t size) {
+  char* data = static_cast<char*>(bytes);
+  while (size > 0) {
+    ssize_t n = read(fd, data, size);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return false;
-    if (n == 0) return true;
-    out.append(buffer, size_t(n));
+    if (n <= 0) return false;
+    data += n;
+    size -= size_t(n);
   }
+  return true;
 }
 
-// Only the zygote's socket and the standard streams stay open: a copy of
-// another socket's end would keep that socket from closing.
+// Only the zygote's socket stays open, and the standard streams become
+// /dev/null: a copy of another socket's end would keep that socket from
+// closing, and a copy of the caller's stdout or stderr (often a pipe that a
+// build tool reads to its end) would keep that pipe open after the caller
+// ended. A child's crash is reported by its parent instead.
 void close_other_files(int keep) {
+  int null = open("/dev/null", O_RDWR);
+  if (null >= 0) {
+    for (int fd = 0; fd < kControlFd; ++fd) {
+      if (fd != keep && fd != null) dup2(null, fd);
+    }
+    if (null >= kControlFd && null != keep) close(null);
+  }
   if (keep != kControlFd) {
     dup2(keep, kControlFd);
     if (keep < kControlFd) close(keep);
@@ -86,32 +104,41 @@ void reset_signals() {
   if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
 }
 
-// One request, in a child of the zygote: read it, run the handler on a
-// large stack, answer, end without running the program's exit handlers.
-[[noreturn]] void serve(int fd, const RequestHeader& header) {
+// A worker, in a child of the zygote: answers requests on its connection
+// until the connection closes, each handler on a large stack; ends without
+// running the program's exit handlers.
+[[noreturn]] void serve(int fd, pid_t zygote) {
   close(kControlFd);
-  if (header.time_limit_s > 0) alarm(header.time_limit_s + 10);
-  std::string request;
-  if (!read_all(fd, request)) _exit(2);
-  std::string answer;
-  try {
-    run_on_worker([&] { answer = header.handler(request); }, 0, {});
-  } catch (...) {
-    _exit(3);
+  // Ends with the zygote, which ends with the Backend or its process: no
+  // worker outlives the compiler that asked for it.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != zygote) _exit(5);
+  for (;;) {
+    RequestHeader header{};
+    if (!read_exact(fd, &header, sizeof header)) _exit(0);
+    std::string request(header.size, '\0');
+    if (!read_exact(fd, request.data(), request.size())) _exit(0);
+    if (header.time_limit_s > 0) alarm(header.time_limit_s + 10);
+    std::string answer;
+    try {
+      run_on_worker([&] { answer = header.handler(request); }, 0, {});
+    } catch (...) {
+      _exit(3);
+    }
+    alarm(0);
+    uint64_t size = answer.size();
+    if (!write_all(fd, &kAnswered, 1) || !write_all(fd, &size, sizeof size) || !write_all(fd, answer.data(), size)) {
+      _exit(4);
+    }
   }
-  std::string framed(1, kAnswered);
-  uint64_t size = answer.size();
-  framed.append(reinterpret_cast<const char*>(&size), sizeof size);
-  framed += answer;
-  _exit(write_all(fd, framed.data(), framed.size()) ? 0 : 4);
 }
 
-// Receives one request: its header and the socket to answer on. 0 when the
-// Backend closed its end (or the socket failed): time to exit.
-int receive(RequestHeader& header, int& fd) {
-  fd = -1;
+// Receives a connection for a new worker. -1 when the Backend closed its
+// end (or the socket failed): time to exit; -2 for a message without one.
+int receive_connection() {
+  char byte = 0;
   alignas(struct cmsghdr) char control[CMSG_SPACE(sizeof(int))];
-  struct iovec iov {&header, sizeof header};
+  struct iovec iov {&byte, 1};
   struct msghdr message {};
   message.msg_iov = &iov;
   message.msg_iovlen = 1;
@@ -121,36 +148,36 @@ int receive(RequestHeader& header, int& fd) {
   do {
     n = recvmsg(kControlFd, &message, MSG_CMSG_CLOEXEC);
   } while (n < 0 && errno == EINTR);
-  if (n <= 0) return 0;
+  if (n <= 0) return -1;
+  int fd = -2;
   for (struct cmsghdr* c = CMSG_FIRSTHDR(&message); c; c = CMSG_NXTHDR(&message, c)) {
     if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS) std::memcpy(&fd, CMSG_DATA(c), sizeof fd);
   }
-  return int(n);
+  return fd;
 }
 
-// The zygote: forks a child per request until the socket closes. Makes no
-// allocation, so that it never needs a lock it might have been copied with.
+// The zygote: forks a worker per connection until its socket closes. Makes
+// no allocation, so that it never needs a lock it might have been copied
+// with.
 [[noreturn]] void zygote_main(int control) {
   close_other_files(control);
   reset_signals();
+  const pid_t self = getpid();
   for (;;) {
-    RequestHeader header{};
-    int fd = -1;
-    int received = receive(header, fd);
-    if (received == 0) _exit(0);
+    int fd = receive_connection();
+    if (fd == -1) _exit(0);
     if (fd < 0) continue;
-    if (size_t(received) == sizeof header) {
-      pid_t child = fork();
-      if (child == 0) serve(fd, header);
-      if (child < 0) (void)!write(fd, &kUnavailable, 1);
-    }
+    pid_t child = fork();
+    if (child == 0) serve(fd, self);
+    if (child < 0) (void)!write(fd, &kUnavailable, 1);
     close(fd);
   }
 }
 
-bool send_request(int control, const RequestHeader& header, int fd) {
+bool send_connection(int control, int fd) {
+  char byte = 0;
   alignas(struct cmsghdr) char buffer[CMSG_SPACE(sizeof(int))] = {};
-  struct iovec iov {const_cast<RequestHeader*>(&header), sizeof header};
+  struct iovec iov {&byte, 1};
   struct msghdr message {};
   message.msg_iov = &iov;
   message.msg_iovlen = 1;
@@ -165,20 +192,25 @@ bool send_request(int control, const RequestHeader& header, int fd) {
   do {
     n = sendmsg(control, &message, MSG_NOSIGNAL);
   } while (n < 0 && errno == EINTR);
-  return n == ssize_t(sizeof header);
+  return n == 1;
 }
 
-ChildAnswer decode(std::string reply) {
+// One request to the worker on `fd` and its answer.
+ChildAnswer exchange(int fd, CrashIsolation::Handler handler, std::string_view request, uint32_t time_limit_s) {
+  RequestHeader header{handler, time_limit_s, request.size()};
+  // A worker that died while reading leaves the rest unsent; the missing
+  // answer says so.
+  if (write_all(fd, &header, sizeof header)) write_all(fd, request.data(), request.size());
   ChildAnswer answer;
   answer.kind = ChildAnswer::Kind::died;
-  if (reply.size() == 1 && reply[0] == kUnavailable) answer.kind = ChildAnswer::Kind::unavailable;
+  char kind = 0;
   uint64_t size = 0;
-  if (reply.size() < 1 + sizeof size || reply[0] != kAnswered) return answer;
-  std::memcpy(&size, reply.data() + 1, sizeof size);
-  if (size != reply.size() - 1 - sizeof size) return answer;
-  answer.kind = ChildAnswer::Kind::answered;
-  answer.bytes = reply.substr(1 + sizeof size);
-  return answer;
+  if (!read_exact(fd, &kind, 1)) return answer;
+  if (kind == kUnavailable) return {ChildAnswer::Kind::unavailable, {}};
+  if (kind != kAnswered || !read_exact(fd, &size, sizeof size)) return answer;
+  std::string bytes(size, '\0');
+  if (!read_exact(fd, bytes.data(), bytes.size())) return answer;
+  return {ChildAnswer::Kind::answered, std::move(bytes)};
 }
 
 }  // namespace
@@ -256,31 +288,48 @@ CrashIsolation::CrashIsolation() {
 }
 
 CrashIsolation::~CrashIsolation() {
+  for (int fd : idle_) close(fd);  // their workers exit
   if (control_ < 0) return;
   close(control_);
   while (waitpid(zygote_, nullptr, 0) < 0 && errno == EINTR) {
   }
 }
 
+int CrashIsolation::start_worker() const {
+  int ends[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return -1;
+  bool sent = send_connection(control_, ends[1]);
+  close(ends[1]);
+  if (sent) return ends[0];
+  close(ends[0]);
+  return -1;
+}
+
 ChildAnswer CrashIsolation::run(Handler handler, std::string_view request, uint32_t time_limit_s) const {
   if (control_ < 0) return {};
-  int ends[2];
-  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) return {};
-  bool sent = send_request(control_, RequestHeader{handler, time_limit_s}, ends[1]);
-  close(ends[1]);
-  if (!sent) {
-    close(ends[0]);
-    return {};
+  // A worker that served earlier requests and dies on this one gets a second
+  // try in a new worker: only a crash that repeats there is the request's.
+  for (;;) {
+    int fd = -1;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!idle_.empty()) {
+        fd = idle_.back();
+        idle_.pop_back();
+      }
+    }
+    const bool reused = fd >= 0;
+    if (!reused) fd = start_worker();
+    if (fd < 0) return {};
+    ChildAnswer answer = exchange(fd, handler, request, time_limit_s);
+    if (answer.kind == ChildAnswer::Kind::answered) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      idle_.push_back(fd);
+      return answer;
+    }
+    close(fd);
+    if (!reused || answer.kind == ChildAnswer::Kind::unavailable) return answer;
   }
-  // A child that died while reading leaves the rest unsent; its (empty)
-  // answer says so.
-  write_all(ends[0], request.data(), request.size());
-  shutdown(ends[0], SHUT_WR);
-  std::string reply;
-  bool read = read_all(ends[0], reply);
-  close(ends[0]);
-  if (!read) return {ChildAnswer::Kind::died, {}};
-  return decode(std::move(reply));
 }
 
 }  // namespace facet::backend

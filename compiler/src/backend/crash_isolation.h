@@ -12,17 +12,21 @@
 // inherits every lock another thread held at that instant (the allocator's,
 // glslang's own) without the thread that would release it, so it can hang
 // forever. The zygote is forked once, when the Backend is made, and stays
-// single-threaded: it only waits for requests and forks a child for each.
-// Children of a single-threaded process inherit no held lock.
+// single-threaded: it only waits for connections and forks a worker for
+// each. Children of a single-threaded process inherit no held lock.
 //
-// A child runs a plain function (no captures: it lives in the zygote's copy
-// of the program, not in the caller's memory) on the request's bytes, on a
-// large-stack thread (worker.h), and sends back the bytes it returns.
+// A worker runs a plain function (no captures: it lives in the zygote's
+// copy of the program, not in the caller's memory) on a request's bytes,
+// on a large-stack thread (worker.h), and sends back the bytes it returns.
+// Workers serve one request after another (a fresh process per request
+// would fault in its whole heap each time); one is started when every
+// other is busy, and one that dies is replaced.
 #pragma once
 
 #include <sys/types.h>
 
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -85,14 +89,22 @@ class CrashIsolation {
   CrashIsolation(const CrashIsolation&) = delete;
   CrashIsolation& operator=(const CrashIsolation&) = delete;
 
-  // handler(request) in a child process; waits for its answer. Thread-safe.
-  // A child still running `time_limit_s` + 10 seconds after it started is
-  // killed (SIGALRM), should its parent have stopped waiting; 0: no limit.
+  // handler(request) in a worker process; waits for its answer.
+  // Thread-safe. A worker that died on a request after serving others is
+  // replaced and the request tried once more: `died` means a new worker
+  // died on it too. A worker still running `time_limit_s` + 10 seconds
+  // after the request came is killed (SIGALRM), should its caller have
+  // stopped waiting; 0: no limit.
   ChildAnswer run(Handler handler, std::string_view request, uint32_t time_limit_s) const;
 
  private:
-  int control_ = -1;  // our end of the zygote's request socket
+  // A connection to a new worker; -1 when none could be asked for.
+  int start_worker() const;
+
+  int control_ = -1;  // our end of the zygote's socket
   pid_t zygote_ = -1;
+  mutable std::mutex mutex_;
+  mutable std::vector<int> idle_;  // connections to workers waiting for a request
 };
 
 }  // namespace facet::backend

@@ -48,6 +48,19 @@ TEST(CrashIsolationTest, TheHandlerRunsInAnotherProcess) {
   EXPECT_NE(answer.bytes, std::to_string(getpid()));
 }
 
+TEST(CrashIsolationTest, AWorkerServesOneRequestAfterAnotherAndOneThatDiedIsReplaced) {
+  CrashIsolation isolation;
+  ChildAnswer first = isolation.run(own_process_id, "", 10);
+  ChildAnswer second = isolation.run(own_process_id, "", 10);
+  ASSERT_EQ(first.kind, ChildAnswer::Kind::answered);
+  ASSERT_EQ(second.kind, ChildAnswer::Kind::answered);
+  EXPECT_EQ(first.bytes, second.bytes);
+  EXPECT_EQ(isolation.run(crashes, "", 10).kind, ChildAnswer::Kind::died);
+  ChildAnswer after = isolation.run(own_process_id, "", 10);
+  ASSERT_EQ(after.kind, ChildAnswer::Kind::answered);
+  EXPECT_NE(after.bytes, first.bytes);
+}
+
 TEST(CrashIsolationTest, AChildThatCrashesAbortsOrExitsDiesAndTheNextRequestIsAnswered) {
   CrashIsolation isolation;
   for (CrashIsolation::Handler handler : {crashes, aborts, exits}) {
