@@ -395,4 +395,23 @@ std::optional<DeclarationProblem> find_declaration_problem(std::string_view text
   return Checker(tokens, entry).run();
 }
 
+std::optional<DeclarationProblem> function_position(std::string_view text, std::string_view name) {
+  Tokens tokens = tokenize(text);
+  if (name.empty()) {
+    if (tokens.list.empty()) return std::nullopt;
+    const Token& first = tokens.list.front();
+    return DeclarationProblem{tokens.files[first.file], first.line, std::string(first.text), {}};
+  }
+  int depth = 0;
+  for (size_t i = 0; i + 1 < tokens.list.size(); ++i) {
+    const Token& t = tokens.list[i];
+    if (t.text == "{") ++depth;
+    if (t.text == "}") --depth;
+    if (depth == 0 && t.kind == Token::ident && t.text == name && tokens.list[i + 1].text == "(") {
+      return DeclarationProblem{tokens.files[t.file], t.line, std::string(name), {}};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace facet::backend

@@ -33,4 +33,9 @@ struct DeclarationProblem {
 // "file"` markers), or nullopt. `entry`: the entry point's name, if any.
 std::optional<DeclarationProblem> find_declaration_problem(std::string_view text, std::string_view entry = {});
 
+// Where function `name` is first declared at the top level of `text` (the
+// same preprocessed form), its name as the token; nullopt when it is not.
+// An empty `name` gives the first token of the text.
+std::optional<DeclarationProblem> function_position(std::string_view text, std::string_view name);
+
 }  // namespace facet::backend

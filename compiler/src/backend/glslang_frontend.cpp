@@ -487,8 +487,8 @@ std::string run_job_in_child(std::string_view request) {
 }
 
 // run_job in a child; nullopt when no child could be started. A child that
-// died is the program's error, located at its start: where glslang was
-// when it crashed is lost with the child.
+// died is the program's error, located at its entry function: where glslang
+// was when it crashed is lost with the child.
 std::optional<GlslangOutput> run_job_isolated(const CrashIsolation& isolation, const GlslangJob& job,
                                               const BackendOptions& options) {
   ChildAnswer answer = isolation.run(run_job_in_child, encode_job(job, options), options.limits.time_limit_s);
@@ -496,11 +496,14 @@ std::optional<GlslangOutput> run_job_isolated(const CrashIsolation& isolation, c
   if (answer.kind == ChildAnswer::Kind::answered) {
     if (std::optional<GlslangOutput> out = decode_output(answer.bytes)) return out;
   }
+  std::optional<DeclarationProblem> entry = function_position(job.text, job.entry);
+  if (!entry) entry = function_position(job.text, {});
+  std::string file = entry && !entry->file.empty() ? entry->file : job.name;
   GlslangOutput out;
   out.parse_log = fmt::format(
-      "ERROR: {}:0: '{}' : glslang crashed on this program, a glslang bug (facet ran it in a child process and "
-      "refuses the program instead); simplifying the code of the '{}' stage may avoid it\n",
-      job.name, job.entry, stage_name(job.stage));
+      "ERROR: {}:{}: '{}' : glslang crashed on this program, a glslang bug (facet ran it in a child process and "
+      "refuses the program instead); simplifying the code of the {} stage may avoid it\n",
+      file, entry ? entry->line : 0, entry ? entry->token : job.entry, stage_name(job.stage));
   return out;
 }
 

@@ -1,5 +1,6 @@
 // The Backend's glslang work in a child process (crash_isolation.h) against
 // the same work in this process (FACET_GLSLANG_IN_PROCESS=1).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -10,8 +11,28 @@
 namespace facet::backend {
 namespace {
 
+using ::testing::HasSubstr;
 using testing::load_shader;
+using testing::make_shader;
 using testing::TestShader;
+
+// Debian 12's glslang dereferences a null pointer in
+// HlslParseContext::handleAssign (from transformEntryPoint) on an entry
+// point whose parameter is a struct holding a buffer; fxc rejects it.
+constexpr const char* kGlslangCrash =
+    "Shader \"Test/Crash\" {\n"
+    "  SubShader {\n"
+    "    Pass {\n"
+    "      HLSLPROGRAM\n"
+    "      #pragma vertex vert\n"
+    "      #pragma fragment frag\n"
+    "      struct O { RWStructuredBuffer<float4> b; };\n"
+    "      float4 vert(O o) : SV_Position { return 0; }\n"
+    "      float4 frag() : SV_Target { return 1; }\n"
+    "      ENDHLSL\n"
+    "    }\n"
+    "  }\n"
+    "}\n";
 
 // A Backend made while FACET_GLSLANG_IN_PROCESS is `value` (unset when null).
 std::unique_ptr<Backend> backend_with(const char* value) {
@@ -61,6 +82,23 @@ TEST(BackendIsolationTest, ErrorsFromAChildAreLocatedAsInThisProcess) {
     EXPECT_TRUE(a_diags.has_errors()) << file;
     EXPECT_EQ(render_text(a_diags, t.sources), render_text(b_diags, t.sources)) << file;
   }
+}
+
+TEST(BackendIsolationTest, AProgramGlslangCrashesOnIsAnErrorAtItsEntryFunctionAndTheBackendGoesOn) {
+  std::unique_ptr<Backend> backend = backend_with(nullptr);
+  TestShader t = make_shader("Crash.shader", kGlslangCrash);
+  Diagnostics diags;
+  EXPECT_FALSE(backend->compile(t.shader, t.program, Stage::vertex, {}, {}, t.sources, diags));
+  std::string text = render_text(diags, t.sources);
+  EXPECT_THAT(text, HasSubstr("Crash.shader:8:14: error: 'vert': glslang crashed on this program")) << text;
+  // The fragment stage of the same program, and the next program, compile.
+  Diagnostics fragment_diags;
+  EXPECT_TRUE(backend->compile(t.shader, t.program, Stage::fragment, {}, {}, t.sources, fragment_diags))
+      << render_text(fragment_diags, t.sources);
+  TestShader next = load_shader("unlit.shader");
+  Diagnostics next_diags;
+  EXPECT_TRUE(backend->compile(next.shader, next.program, Stage::vertex, {}, {}, next.sources, next_diags))
+      << render_text(next_diags, next.sources);
 }
 
 }  // namespace

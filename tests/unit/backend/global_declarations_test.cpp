@@ -147,3 +147,25 @@ TEST(GlobalDeclarationsTest, WhatGlslangTakesIsNoProblem) {
 
 }  // namespace
 }  // namespace facet::backend
+
+namespace facet::backend {
+namespace {
+
+TEST(FunctionPositionTest, FindsATopLevelDeclarationByNameThroughLineDirectives) {
+  std::string text = "#line 3 \"a.shader\"\nfloat4 helper(float x) { return vert(x); }\n#line 20 \"b.cginc\"\n\n"
+                     "float4 vert(float x) : SV_Position { return 0; }\n";
+  auto vert = function_position(text, "vert");
+  ASSERT_TRUE(vert);
+  EXPECT_EQ(vert->file, "b.cginc");  // not the call inside helper's body
+  EXPECT_EQ(vert->line, 21u);
+  EXPECT_EQ(vert->token, "vert");
+  EXPECT_FALSE(function_position(text, "frag"));
+  auto first = function_position(text, "");
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->file, "a.shader");
+  EXPECT_EQ(first->line, 3u);
+  EXPECT_EQ(first->token, "float4");
+}
+
+}  // namespace
+}  // namespace facet::backend

@@ -146,6 +146,22 @@ TEST_F(FacetcTest, AnExceptionInsideGlslangIsAnErrorNotACrash) {
   }
 }
 
+// glslang's HLSL parser crashes (SIGSEGV in handleAssign) on an entry point
+// whose parameter is a struct holding a buffer, a form no check before
+// glslang refuses: the parse runs in a child process, so the program gets a
+// located error, exit 1 and no output, and the other input still compiles.
+TEST_F(FacetcTest, ACrashInsideGlslangIsALocatedErrorAndTheOtherInputsCompile) {
+  write_all(dir_ / "c.shader", pass_shader("", "    struct O { RWStructuredBuffer<float4> b; };\n"
+                                               "    float4 vert(O o) : SV_Position { return 0; }\n"
+                                               "    float4 frag() : SV_Target { return 1; }\n"));
+  write_all(dir_ / "fine.shader", pass_shader("", std::string(kVert) + "    float4 frag() : SV_Target { return 1; }\n"));
+  FacetcRun run = facetc({"c.shader", "fine.shader", "--out-dir", "out"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_THAT(run.err, ::testing::ContainsRegex("c\\.shader:[0-9]+:[0-9]+: error: 'vert': glslang crashed on this program"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "c.facetpkg"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "fine.facetpkg")) << run.err;
+}
+
 // glslang lowers GetRenderTargetSampleCount() to gl_NumSamples and its
 // SPIR-V generator crashes on it (SIGSEGV): facet's targets have one sample.
 TEST_F(FacetcTest, GetRenderTargetSampleCountIsOne) {
