@@ -309,9 +309,9 @@ ChildAnswer CrashIsolation::run(Handler handler, std::string_view request, uint3
   if (control_ < 0) return {};
   // A worker that served earlier requests and dies on this one gets a second
   // try in a new worker: only a crash that repeats there is the request's.
-  for (;;) {
+  for (bool retry = false;; retry = true) {
     int fd = -1;
-    {
+    if (!retry) {
       std::lock_guard<std::mutex> lock(mutex_);
       if (!idle_.empty()) {
         fd = idle_.back();
