@@ -133,24 +133,35 @@ void reset_signals() {
   }
 }
 
+// A one-byte message with room for one file descriptor (SCM_RIGHTS): how a
+// worker's connection reaches the zygote. Points into itself: not copied.
+struct FdMessage {
+  char byte = 0;
+  alignas(struct cmsghdr) char control[CMSG_SPACE(sizeof(int))] = {};
+  struct iovec iov {&byte, 1};
+  struct msghdr header {};
+
+  FdMessage() {
+    header.msg_iov = &iov;
+    header.msg_iovlen = 1;
+    header.msg_control = control;
+    header.msg_controllen = sizeof control;
+  }
+  FdMessage(const FdMessage&) = delete;
+  FdMessage& operator=(const FdMessage&) = delete;
+};
+
 // Receives a connection for a new worker. -1 when the Backend closed its
 // end (or the socket failed): time to exit; -2 for a message without one.
 int receive_connection() {
-  char byte = 0;
-  alignas(struct cmsghdr) char control[CMSG_SPACE(sizeof(int))];
-  struct iovec iov {&byte, 1};
-  struct msghdr message {};
-  message.msg_iov = &iov;
-  message.msg_iovlen = 1;
-  message.msg_control = control;
-  message.msg_controllen = sizeof control;
+  FdMessage message;
   ssize_t n;
   do {
-    n = recvmsg(kControlFd, &message, MSG_CMSG_CLOEXEC);
+    n = recvmsg(kControlFd, &message.header, MSG_CMSG_CLOEXEC);
   } while (n < 0 && errno == EINTR);
   if (n <= 0) return -1;
   int fd = -2;
-  for (struct cmsghdr* c = CMSG_FIRSTHDR(&message); c; c = CMSG_NXTHDR(&message, c)) {
+  for (struct cmsghdr* c = CMSG_FIRSTHDR(&message.header); c; c = CMSG_NXTHDR(&message.header, c)) {
     if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS) std::memcpy(&fd, CMSG_DATA(c), sizeof fd);
   }
   return fd;
@@ -175,22 +186,15 @@ int receive_connection() {
 }
 
 bool send_connection(int control, int fd) {
-  char byte = 0;
-  alignas(struct cmsghdr) char buffer[CMSG_SPACE(sizeof(int))] = {};
-  struct iovec iov {&byte, 1};
-  struct msghdr message {};
-  message.msg_iov = &iov;
-  message.msg_iovlen = 1;
-  message.msg_control = buffer;
-  message.msg_controllen = sizeof buffer;
-  struct cmsghdr* c = CMSG_FIRSTHDR(&message);
+  FdMessage message;
+  struct cmsghdr* c = CMSG_FIRSTHDR(&message.header);
   c->cmsg_level = SOL_SOCKET;
   c->cmsg_type = SCM_RIGHTS;
   c->cmsg_len = CMSG_LEN(sizeof(int));
   std::memcpy(CMSG_DATA(c), &fd, sizeof fd);
   ssize_t n;
   do {
-    n = sendmsg(control, &message, MSG_NOSIGNAL);
+    n = sendmsg(control, &message.header, MSG_NOSIGNAL);
   } while (n < 0 && errno == EINTR);
   return n == 1;
 }
