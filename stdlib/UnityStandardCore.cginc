@@ -198,11 +198,18 @@ half4 OutputForward(half4 output, half alphaFromSurface) { return half4(output.r
 half4 OutputForward(half4 output, half alphaFromSurface) { UNITY_OPAQUE_ALPHA(output.a); return output; }
 #endif
 
-// Per-vertex ambient: facet evaluates SH per pixel (ShadeSHPerPixel), so the
-// vertex part is what ShadeSHPerVertex adds to nothing.
+// Per-vertex ambient: ForwardBase's four per-vertex point lights
+// (VERTEXLIGHT_ON) and what ShadeSHPerVertex adds to them; facet evaluates
+// the SH itself per pixel (ShadeSHPerPixel).
 inline half4 VertexGIForward(VertexInput v, float3 posWorld, half3 normalWorld)
 {
-    return half4(ShadeSHPerVertex(normalWorld, half3(0, 0, 0)), 0);
+    half3 vertexLights = 0;
+#ifdef VERTEXLIGHT_ON
+    vertexLights = Shade4PointLights(unity_4LightPosX0, unity_4LightPosY0, unity_4LightPosZ0,
+                                     unity_LightColor[0].rgb, unity_LightColor[1].rgb, unity_LightColor[2].rgb,
+                                     unity_LightColor[3].rgb, unity_4LightAtten0, posWorld, normalWorld);
+#endif
+    return half4(ShadeSHPerVertex(normalWorld, vertexLights), 0);
 }
 
 // Fills the tangentToWorld rows (and the parallax view direction in w).

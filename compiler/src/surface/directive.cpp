@@ -9,13 +9,12 @@ namespace facet::surface {
 namespace {
 
 // Options that change nothing in facet, and why (lightmaps, deferred
-// shading, vertex lights and the like do not exist here).
-constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kIgnored = {{
+// shading and the like do not exist here).
+constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kIgnored = {{
     {"nolightmap", "facet has no lightmaps"},
     {"nodynlightmap", "facet has no lightmaps"},
     {"nodirlightmap", "facet has no lightmaps"},
     {"nometa", "facet generates no Meta pass"},
-    {"novertexlights", "facet has no per-vertex lights"},
     {"halfasview", "the view direction is always per pixel"},
     {"interpolateview", "the view direction is always per pixel"},
     {"noshadowmask", "facet has no shadow masks"},
@@ -35,7 +34,7 @@ bool flag_option(std::string_view arg, Directive& d) {
       {"fullforwardshadows", &Directive::full_forward_shadows},
       {"noshadow", &Directive::no_shadow},     {"noambient", &Directive::no_ambient},
       {"nofog", &Directive::no_fog},           {"noforwardadd", &Directive::no_forward_add},
-      {"noinstancing", &Directive::no_instancing}};
+      {"noinstancing", &Directive::no_instancing}, {"novertexlights", &Directive::no_vertex_lights}};
   for (auto [name, member] : kFlags) {
     if (arg == name) {
       d.*member = true;

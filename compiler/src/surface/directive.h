@@ -25,6 +25,7 @@ struct Directive {
   DecalMode decal = DecalMode::none;
   bool keep_alpha = false, add_shadow = false, full_forward_shadows = false, no_shadow = false;
   bool no_ambient = false, no_fog = false, no_forward_add = false, no_instancing = false;
+  bool no_vertex_lights = false;  // novertexlights: ForwardBase without VERTEXLIGHT_ON
   bool exclude_forward = false;
   SourceSpan span;
 

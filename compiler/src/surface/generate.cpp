@@ -63,6 +63,13 @@ class Writer {
                                f.kind == InputKind::world_refl);
            });
   }
+  // ForwardBase's four per-vertex point lights (VERTEXLIGHT_ON, which only
+  // the vertex stage sees): computed there, added to the ambient per pixel.
+  bool vertex_lights() const {
+    bool gi = s_.lighting == LightingForm::gi || s_.lighting == LightingForm::view_gi;
+    return pass_ == GeneratedPass::forward_base && !d_.no_vertex_lights && !d_.no_ambient &&
+           (gi || has_output("Albedo"));
+  }
   bool interpolated(const InputField& f) const {
     if (!f.used || !runs_surf()) return false;
     switch (f.kind) {
@@ -94,6 +101,7 @@ class Writer {
       if (f.kind == InputKind::color) line(fmt::format("  fixed4 {} : COLOR0;", member(f)));
       else line(fmt::format("  {} {} : {};", f.type, member(f), semantic()));
     }
+    if (vertex_lights()) line(fmt::format("  float3 vertexLight : {};", semantic()));
     if (!shadow() && !d_.no_fog) line(fmt::format("  UNITY_FOG_COORDS({})", next_texcoord_++));
     if (!shadow()) line(fmt::format("  UNITY_SHADOW_COORDS({})", next_texcoord_++));
     line("};");
@@ -144,6 +152,14 @@ class Writer {
           break;
         default: break;
       }
+    }
+    if (vertex_lights()) {
+      line("  o.vertexLight = 0;");
+      line("#ifdef VERTEXLIGHT_ON");
+      line("  o.vertexLight = Shade4PointLights(unity_4LightPosX0, unity_4LightPosY0, unity_4LightPosZ0, "
+           "unity_LightColor[0].rgb, unity_LightColor[1].rgb, unity_LightColor[2].rgb, unity_LightColor[3].rgb, "
+           "unity_4LightAtten0, worldPos, worldNormal);");
+      line("#endif");
     }
     if (!shadow()) {
       line("  TRANSFER_SHADOW(o);");
@@ -296,7 +312,8 @@ class Writer {
         line("  giInput.worldPos = worldPos;");
         line("  giInput.worldViewDir = worldViewDir;");
         line("  giInput.atten = atten;");
-        line("  giInput.ambient = 0;  // SH is evaluated per pixel (ShadeSHPerPixel)");
+        // SH is evaluated per pixel (ShadeSHPerPixel), added to the vertex lights.
+        line(vertex_lights() ? "  giInput.ambient = IN.vertexLight;" : "  giInput.ambient = 0;");
         line("  giInput.probeHDR[0] = unity_SpecCube0_HDR;");
         line(fmt::format("  {}_GI(o, giInput, gi);", fn));
       } else {
@@ -308,7 +325,8 @@ class Writer {
       line(s_.lighting == LightingForm::light_atten ? fmt::format("  c += {}(o, lightDir, atten);", fn)
                                                     : fmt::format("  c += {}(o, lightDir, worldViewDir, atten);", fn));
       if (base && !d_.no_ambient && has_output("Albedo")) {
-        line("  c.rgb += o.Albedo * ShadeSH9(float4(o.Normal, 1.0));");
+        line(vertex_lights() ? "  c.rgb += o.Albedo * (ShadeSH9(float4(o.Normal, 1.0)) + IN.vertexLight);"
+                             : "  c.rgb += o.Albedo * ShadeSH9(float4(o.Normal, 1.0));");
       }
     }
     if (base && has_output("Emission")) line("  c.rgb += o.Emission;");

@@ -86,9 +86,12 @@ std::vector<ir::Pragma> pass_pragmas(const ir::Program& user, GeneratedPass pass
   std::vector<std::string> shadow_modifier;
   if (d.no_shadow) shadow_modifier.push_back("noshadow");
   switch (pass) {
-    case GeneratedPass::forward_base:
-      out.push_back(pragma("multi_compile_fwdbase", shadow_modifier, d.span));
+    case GeneratedPass::forward_base: {
+      std::vector<std::string> modifiers = shadow_modifier;
+      if (d.no_vertex_lights) modifiers.push_back("novertexlight");
+      out.push_back(pragma("multi_compile_fwdbase", modifiers, d.span));
       break;
+    }
     case GeneratedPass::forward_add:
       out.push_back(pragma(d.full_forward_shadows ? "multi_compile_fwdadd_fullshadows" : "multi_compile_fwdadd",
                            shadow_modifier, d.span));

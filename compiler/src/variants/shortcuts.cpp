@@ -226,14 +226,9 @@ std::vector<std::vector<std::string>> split_rows(std::span<const std::string_vie
 ShortcutSet plain(std::vector<std::string> keywords) { return {std::move(keywords), kAllStages}; }
 ShortcutSet optional(std::string keyword, StageMask stages = kAllStages) { return {{"", std::move(keyword)}, stages}; }
 
-// Lightmaps, the shadowmask and vertex lights: facet's renderer has none.
+// Lightmaps and the shadowmask: facet's renderer has neither.
 const std::vector<std::string> kBakedLighting = {"LIGHTMAP_ON", "DIRLIGHTMAP_COMBINED", "DYNAMICLIGHTMAP_ON",
                                                  "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING"};
-
-std::vector<std::string> with(std::vector<std::string> list, const std::string& more) {
-  list.push_back(more);
-  return list;
-}
 
 // The order is the documented one (docs/variants.md) and the order of
 // known_shortcuts(), which error messages list.
@@ -261,12 +256,12 @@ const std::vector<ShortcutDef>& shortcut_table() {
     Shortcut fullshadows{light_shadows, split_rows(kFwdAddFullShadowsRows), {"SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING"}};
     return std::vector<ShortcutDef>{
         {"multi_compile_fwdbase",
-         {fwdbase_sets(true), split_rows(kFwdBaseRows), with(kBakedLighting, "VERTEXLIGHT_ON")}},
+         {fwdbase_sets(true), split_rows(kFwdBaseRows), kBakedLighting}},
         {"multi_compile_fwdadd", {{plain(lights)}, {}, {}}},
         {"multi_compile_fwdadd_fullshadows", fullshadows},
         {"multi_compile_shadowcaster", {{plain({"SHADOWS_DEPTH", "SHADOWS_CUBE"})}, {}, {}}},
         {"multi_compile_fwdbasealpha",
-         {fwdbase_sets(false), split_rows(kFwdBaseAlphaRows), with(kBakedLighting, "VERTEXLIGHT_ON")}},
+         {fwdbase_sets(false), split_rows(kFwdBaseAlphaRows), kBakedLighting}},
         // The deferred light pass: the same combinations as fwdadd_fullshadows.
         {"multi_compile_lightpass", fullshadows},
         // The screen-space shadow collector: every combination of the two.

@@ -165,11 +165,59 @@ struct Builder {
   Result<void, RenderError> vertex_lit_draw(ObjectState& object, size_t p, const std::vector<std::string>& fog,
                                             const std::string& fog_note, DrawRecord record) {
     std::vector<size_t> chosen = vertex_lights(scene, lights, object);
-    const LightValues& values = out.vertex_lights.emplace_back(vertex_light_values(scene, chosen, lights.view));
+    const LightValues& values = out.draw_lights.emplace_back(vertex_light_values(scene, chosen, lights.view));
     for (size_t i : chosen) record.light += (record.light.empty() ? "" : ", ") + light_name(scene, i);
     record.why = fmt::format("LightMode Vertex: lit per vertex by {} of the scene's lights (at most 8)", chosen.size()) +
                  fog_note;
     return add(object, p, &values, fog, std::move(record));
+  }
+
+  // ForwardBase: the main light, and the object's vertex and SH lights.
+  Result<void, RenderError> base_draw(ObjectState& object, size_t p, const ObjectLights& scheduled,
+                                      const std::vector<std::string>& fog, const std::string& fog_note,
+                                      DrawRecord record) {
+    std::vector<std::string> global = {"DIRECTIONAL", "LIGHTPROBE_SH"};
+    global.insert(global.end(), fog.begin(), fog.end());
+    const LightValues* light = &lights.none;
+    if (lights.main >= 0) {
+      light = &lights.lights[size_t(lights.main)];
+      record.light = light_name(scene, size_t(lights.main));
+      record.why = "ForwardBase: the brightest directional light, ambient as SH" + fog_note;
+      if (light->shadowed) {
+        std::vector<std::string> shadows = shadow_keywords(scene.lights[size_t(lights.main)]);
+        global.insert(global.end(), shadows.begin(), shadows.end());
+        record.why += "; its shadows: " + join(shadows);
+      }
+    } else {
+      record.why = "ForwardBase: no directional light (black light), ambient as SH" + fog_note;
+    }
+    auto names = [&](const std::vector<size_t>& list) {
+      std::string text;
+      for (size_t i : list) text += (text.empty() ? "" : ", ") + light_name(scene, i);
+      return text;
+    };
+    std::vector<size_t> unpixeled = scheduled.vertex;
+    unpixeled.insert(unpixeled.end(), scheduled.sh.begin(), scheduled.sh.end());
+    if (!unpixeled.empty()) {
+      std::vector<size_t> unimportant;
+      for (size_t i : unpixeled) {
+        if (scene.lights[i].render_mode == LightRenderMode::not_important) unimportant.push_back(i);
+      }
+      record.why += fmt::format("; beyond pixel_light_count {}", scene.pixel_light_count);
+      if (!unimportant.empty()) record.why += fmt::format(" or not important ({})", names(unimportant));
+    }
+    if (!scheduled.vertex.empty()) {
+      global.push_back("VERTEXLIGHT_ON");
+      record.why += fmt::format(": per vertex (VERTEXLIGHT_ON): {}", names(scheduled.vertex));
+    }
+    if (!scheduled.sh.empty()) {
+      record.why += fmt::format("{} into SH: {}", scheduled.vertex.empty() ? ":" : ";", names(scheduled.sh));
+    }
+    if (!scheduled.vertex.empty() || !scheduled.sh.empty()) {
+      light = &out.draw_lights.emplace_back(
+          forward_base_values(*light, scene, scheduled.vertex, scheduled.sh, object.center));
+    }
+    return add(object, p, light, global, std::move(record));
   }
 
   Result<void, RenderError> object_draws(ObjectState& object) {
@@ -177,6 +225,7 @@ struct Builder {
     std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
     bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
                                       [](const SelectedPass& p) { return forward_mode(p.ir); });
+    ObjectLights scheduled = schedule_lights(scene, lights, object);
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       const ir::Pass& pass = object.shader->passes[p].ir;
       DrawRecord record = pass_record(object, p);
@@ -198,25 +247,10 @@ struct Builder {
         continue;
       }
       if (role == Role::base) {
-        std::vector<std::string> global = {"DIRECTIONAL", "LIGHTPROBE_SH"};
-        global.insert(global.end(), fog.begin(), fog.end());
-        const LightValues* light = &lights.none;
-        if (lights.main >= 0) {
-          light = &lights.lights[size_t(lights.main)];
-          record.light = light_name(scene, size_t(lights.main));
-          record.why = "ForwardBase: the brightest directional light, ambient as SH" + fog_note;
-          if (light->shadowed) {
-            std::vector<std::string> shadows = shadow_keywords(scene.lights[size_t(lights.main)]);
-            global.insert(global.end(), shadows.begin(), shadows.end());
-            record.why += "; its shadows: " + join(shadows);
-          }
-        } else {
-          record.why = "ForwardBase: no directional light (black light), ambient as SH" + fog_note;
-        }
-        FACET_TRY(add(object, p, light, global, record));
+        FACET_TRY(base_draw(object, p, scheduled, fog, fog_note, record));
         continue;
       }
-      std::vector<size_t> extra = additive_lights(scene, lights, object);
+      const std::vector<size_t>& extra = scheduled.pixel;
       if (extra.empty()) {
         record.drawn = false;
         record.why = "ForwardAdd: no further per-pixel light reaches the object";
@@ -229,7 +263,10 @@ struct Builder {
         DrawRecord add_record = record;
         add_record.additive = true;
         add_record.light = light_name(scene, extra[k]);
-        add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}, additive", k + 1, extra.size()) + fog_note;
+        bool important = scene.lights[extra[k]].render_mode == LightRenderMode::important;
+        add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}{}, additive", k + 1, extra.size(),
+                                     important ? " (important: always a pixel light)" : "") +
+                         fog_note;
         if (light.shadowed) {
           std::vector<std::string> shadows = shadow_keywords(scene.lights[extra[k]]);
           global.insert(global.end(), shadows.begin(), shadows.end());
@@ -256,7 +293,10 @@ LightSetup setup_lights(const Scene& scene, const glm::mat4& view) {
     setup.lights.push_back(light_values(scene.lights[i]));
     // ForwardBase has no cookie variant (multi_compile_fwdbase declares only
     // DIRECTIONAL), so a directional light with a cookie is drawn additively.
-    if (scene.lights[i].type != LightType::directional || scene.lights[i].cookie) continue;
+    if (scene.lights[i].type != LightType::directional || scene.lights[i].cookie ||
+        scene.lights[i].render_mode == LightRenderMode::not_important) {
+      continue;
+    }
     if (setup.main < 0 || setup.lights[i].brightness > setup.lights[size_t(setup.main)].brightness) {
       setup.main = int(i);
     }
@@ -302,10 +342,23 @@ std::vector<size_t> ranked_lights(const Scene& scene, const LightSetup& setup, c
 
 }  // namespace
 
-std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
-  std::vector<size_t> out = ranked_lights(scene, setup, object, false);
-  size_t limit = size_t(std::max(0, scene.pixel_light_count - (setup.main >= 0 ? 1 : 0)));
-  if (out.size() > limit) out.resize(limit);
+ObjectLights schedule_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object) {
+  std::vector<size_t> ranked = ranked_lights(scene, setup, object, false);
+  auto mode = [&](size_t i) { return scene.lights[i].render_mode; };
+  long important = std::count_if(ranked.begin(), ranked.end(), [&](size_t i) { return mode(i) == LightRenderMode::important; });
+  long automatic = std::max(0L, long(scene.pixel_light_count) - (setup.main >= 0 ? 1 : 0) - important);
+  ObjectLights out;
+  for (size_t i : ranked) {
+    bool pixel = mode(i) == LightRenderMode::important || (mode(i) == LightRenderMode::automatic && automatic > 0);
+    if (pixel) {
+      if (mode(i) == LightRenderMode::automatic) --automatic;
+      out.pixel.push_back(i);
+    } else if (scene.lights[i].type == LightType::point && out.vertex.size() < 4) {
+      out.vertex.push_back(i);
+    } else {
+      out.sh.push_back(i);
+    }
+  }
   return out;
 }
 

@@ -67,9 +67,18 @@ struct LightSetup {
 
 LightSetup setup_lights(const Scene& scene, const glm::mat4& view);
 
-// The lights beyond the main one that light `object` per pixel, most
-// important first, at most pixel_light_count - 1 when there is a main light.
-std::vector<size_t> additive_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
+// Unity's forward light scheduling for one object, among the lights that
+// reach it other than the main light (directional first, then by
+// importance): important lights and then auto ones up to pixel_light_count
+// (the main light counts) are pixel lights, drawn additively; of the rest,
+// the first four point lights light the ForwardBase pass per vertex
+// (VERTEXLIGHT_ON) and every other light is added to its SH.
+struct ObjectLights {
+  std::vector<size_t> pixel;   // ForwardAdd, one draw each
+  std::vector<size_t> vertex;  // at most 4, point lights
+  std::vector<size_t> sh;
+};
+ObjectLights schedule_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
 // The lights of a vertex-lit pass of `object`: at most 8, the main light
 // included, directional lights first, then by importance.
 std::vector<size_t> vertex_lights(const Scene& scene, const LightSetup& setup, const ObjectState& object);
@@ -79,9 +88,10 @@ struct DrawListResult {
   std::vector<DrawRecord> skipped;    // passes not drawn
   uint64_t variants_compiled = 0;
   std::vector<std::string> compiled;  // descriptions, compile order
-  // The lights of vertex-lit draws, one per such draw (a deque: Draw::light
-  // points into it, and adding does not move what is there).
-  std::deque<LightValues> vertex_lights;
+  // The lights made for one draw: a vertex-lit pass's, a ForwardBase pass's
+  // with vertex or SH lights (a deque: Draw::light points into it, and
+  // adding does not move what is there).
+  std::deque<LightValues> draw_lights;
 };
 
 // Appends the draw of pass `pass_index` of `object` to out.draws: the

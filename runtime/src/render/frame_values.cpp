@@ -17,22 +17,7 @@ glm::vec3 v3(const Vec3& a) { return {a[0], a[1], a[2]}; }
 void set(UniformValues& u, const std::string& name, const glm::mat4& m) { u.set_matrix(name, glm::value_ptr(m)); }
 void set(UniformValues& u, const std::string& name, const glm::vec4& v) { u.set_vector(name, v.x, v.y, v.z, v.w); }
 
-// A flat ambient colour is the L0 term alone: ShadeSH9(n) returns it for every
-// n. A sky is projected onto L2 SH; unity_Ambient* are its three colours.
-void set_ambient(UniformValues& u, const Scene& scene) {
-  glm::vec3 ambient = linear_color(scene.ambient);
-  glm::vec3 sky = ambient, equator = ambient, ground = ambient;
-  UnitySh sh = flat_unity_sh(ambient);
-  if (scene.sky) {
-    SkyRadiance r = linear_sky(*scene.sky);
-    sky = r.zenith, equator = r.horizon, ground = r.ground;
-    ambient = sky;  // UNITY_LIGHTMODEL_AMBIENT is the sky colour of a gradient
-    sh = pack_unity_sh(project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); }));
-  }
-  set(u, "unity_AmbientSky", glm::vec4(sky, 1));
-  set(u, "unity_AmbientEquator", glm::vec4(equator, 1));
-  set(u, "unity_AmbientGround", glm::vec4(ground, 1));
-  set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
+void set_sh(UniformValues& u, const UnitySh& sh) {
   const char* a[3] = {"unity_SHAr", "unity_SHAg", "unity_SHAb"};
   const char* b[3] = {"unity_SHBr", "unity_SHBg", "unity_SHBb"};
   for (int ch = 0; ch < 3; ++ch) {
@@ -40,6 +25,22 @@ void set_ambient(UniformValues& u, const Scene& scene) {
     set(u, b[ch], sh.b[ch]);
   }
   set(u, "unity_SHC", sh.c);
+}
+
+// unity_Ambient* are a sky's three colours, or the flat ambient thrice.
+void set_ambient(UniformValues& u, const Scene& scene) {
+  glm::vec3 ambient = linear_color(scene.ambient);
+  glm::vec3 sky = ambient, equator = ambient, ground = ambient;
+  if (scene.sky) {
+    SkyRadiance r = linear_sky(*scene.sky);
+    sky = r.zenith, equator = r.horizon, ground = r.ground;
+    ambient = sky;  // UNITY_LIGHTMODEL_AMBIENT is the sky colour of a gradient
+  }
+  set(u, "unity_AmbientSky", glm::vec4(sky, 1));
+  set(u, "unity_AmbientEquator", glm::vec4(equator, 1));
+  set(u, "unity_AmbientGround", glm::vec4(ground, 1));
+  set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
+  set_sh(u, ambient_sh(scene));
 }
 
 // Directional cookies repeat every `size` world units over the light's XY
@@ -186,6 +187,57 @@ LightValues light_values(const SceneLight& light) {
   set(u, "unity_WorldToLight", world_to_light);
   set(u, "_LightPositionRange", glm::vec4(l.position, 1 / light.range));
   set(u, "_FacetSpotParams", {outer, 1 / std::max(inner - outer, 1e-4f), cone, 0});
+  return l;
+}
+
+UnitySh ambient_sh(const Scene& scene) {
+  if (!scene.sky) return flat_unity_sh(linear_color(scene.ambient));
+  SkyRadiance r = linear_sky(*scene.sky);
+  return pack_unity_sh(project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); }));
+}
+
+LightValues forward_base_values(const LightValues& main, const Scene& scene, const std::vector<size_t>& vertex,
+                                const std::vector<size_t>& sh_lights, const glm::vec3& object_center) {
+  LightValues l = main;
+  l.source = main.scene_light();
+  constexpr size_t kSlots = 4;
+  glm::vec4 x(0), y(0), z(0), atten(1);
+  std::vector<float> colors(4 * 8, 0.0f);  // unity_LightColor[8]: ForwardBase uses the first four
+  for (size_t slot = 0; slot < std::min(kSlots, vertex.size()); ++slot) {
+    const SceneLight& light = scene.lights[vertex[slot]];
+    glm::vec3 c = linear_color(light.color) * light.intensity;
+    x[int(slot)] = light.transform.position[0];
+    y[int(slot)] = light.transform.position[1];
+    z[int(slot)] = light.transform.position[2];
+    atten[int(slot)] = 25 / (light.range * light.range);
+    for (int k = 0; k < 3; ++k) colors[4 * slot + k] = c[k];
+    colors[4 * slot + 3] = 1;
+  }
+  set(l.values, "unity_4LightPosX0", x);
+  set(l.values, "unity_4LightPosY0", y);
+  set(l.values, "unity_4LightPosZ0", z);
+  set(l.values, "unity_4LightAtten0", atten);
+  l.values.set_elements("unity_LightColor", std::move(colors));
+  // SH lights as Unity adds them to an object's probe: each light's colour
+  // at the object's centre, from its direction there (a spot as a point
+  // light: its cone is not taken into account).
+  UnitySh sh = ambient_sh(scene);
+  for (size_t index : sh_lights) {
+    const SceneLight& light = scene.lights[index];
+    LightValues values = light_values(light);
+    glm::vec3 c = linear_color(light.color) * light.intensity;
+    glm::vec3 to_light = -values.direction;
+    if (light.type != LightType::directional) {
+      glm::vec3 d = values.position - object_center;
+      float distance = glm::length(d);
+      if (distance < 1e-6f) continue;
+      to_light = d / distance;
+      float r = distance / light.range;
+      c /= 1 + 25 * r * r;
+    }
+    sh = sh + pack_unity_sh(light_sh(to_light, c));
+  }
+  set_sh(l.values, sh);
   return l;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "facet/runtime/scene.h"
+#include "facet/runtime/sky_sh.h"
 #include "facet/runtime/uniforms.h"
 
 namespace facet::runtime {
@@ -46,6 +47,10 @@ struct LightValues {
   std::optional<SceneTexture> cookie;  // bound as _LightTexture0 (white when absent)
   std::string json_path;               // "lights[1]", for messages
   bool shadowed = false;               // has a shadow view (shadows.h): receivers ask for shadow keywords
+  // A draw's own copy (forward_base_values) points at the scene light's
+  // values it was made from, whose shadow map it samples.
+  const LightValues* source = nullptr;
+  const LightValues* scene_light() const { return source ? source : this; }
 };
 
 LightValues light_values(const SceneLight& light);
@@ -59,6 +64,18 @@ LightValues no_light();
 // important first), in the view space of `view`; the other slots black.
 // The pixel-light values are those of no_light().
 LightValues vertex_light_values(const Scene& scene, const std::vector<size_t>& lights, const glm::mat4& view);
+
+// The scene's ambient as L2 SH in Unity's packing (unity_SHAr...): a flat
+// colour's L0 term, or the projected sky.
+UnitySh ambient_sh(const Scene& scene);
+
+// A ForwardBase draw's light when lights beyond the pixel lights reach the
+// object: `main`'s values plus the four per-vertex point lights `vertex`
+// (unity_4LightPosX0/Y0/Z0 in world space, unity_4LightAtten0 = 25 /
+// range^2, unity_LightColor[0..3]; the other slots black) and the ambient SH
+// with the lights `sh_lights` added as seen from `object_center`.
+LightValues forward_base_values(const LightValues& main, const Scene& scene, const std::vector<size_t>& vertex,
+                                const std::vector<size_t>& sh_lights, const glm::vec3& object_center);
 
 UniformValues draw_uniforms(const glm::mat4& object_to_world);
 

@@ -63,7 +63,9 @@ Result<VkRenderPass, RenderError> make_depth_pass(VkDevice device) {
 
 bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) {
   return std::any_of(draws.begin(), draws.end(),
-                     [&](const Draw& d) { return d.light == light && samples_shadow_map(d.record.keywords); });
+                     [&](const Draw& d) {
+                       return d.light && d.light->scene_light() == light && samples_shadow_map(d.record.keywords);
+                     });
 }
 
 Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
@@ -97,6 +99,7 @@ Result<void, RenderError> make_pipelines(const Context& context, const Scene& sc
     bool created = false;
     PipelineState state = d.state;
     state.color_mask = 0;
+    state.offset_factor += map.view.slope_bias;
     Result<VkPipeline, std::string> p =
         get_pipeline(context, *d.variant->program, state, objects[d.object].mirrored, pass, cache, &created);
     if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
@@ -127,7 +130,7 @@ ShadowPasses::~ShadowPasses() {
 
 const Image* ShadowPasses::map_of(const LightValues* light) const {
   for (const auto& map : maps) {
-    if (light && map->light == light) return &map->depth;
+    if (light && map->light == light->scene_light()) return &map->depth;
   }
   return nullptr;
 }

@@ -88,6 +88,9 @@ std::optional<ShadowView> shadow_view(const Scene& scene, size_t light, const st
   std::optional<ShadowView> v =
       l.type == LightType::directional ? directional_view(scene, light, objects, camera_position) : spot_view(scene, light);
   if (!v) return v;
+  // The 3x3 filter's taps lie up to sqrt(2) texels away, and the receiver up
+  // to half a texel off the texel centre the caster's depth was taken at.
+  if (l.shadows == ShadowMode::soft) v->slope_bias = 2;
   // Clip xy (-1..1, y down like the image rows) to texture uv (0..1); depth stays.
   glm::mat4 to_uv = glm::translate(glm::mat4(1), {0.5f, 0.5f, 0}) * glm::scale(glm::mat4(1), {0.5f, 0.5f, 1});
   v->world_to_shadow = to_uv * v->camera.projection * v->camera.view;

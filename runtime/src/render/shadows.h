@@ -27,6 +27,10 @@ struct ShadowView {
   glm::mat4 world_to_shadow{1}; // world -> (u, v, depth, w)
   float texel_world = 0;        // world size of one texel (at half the range for a spot)
   glm::vec4 caster_bias{0};     // unity_LightShadowBias
+  // The casters' slope-scaled depth bias (the rasteriser's, in multiples of
+  // the depth change over one texel): soft shadows compare neighbours up to
+  // a texel diagonal away, which a constant bias cannot cover on a slope.
+  float slope_bias = 0;
 };
 
 // Where `light` (directional or spot, shadows on) looks from, fitted for a

@@ -115,6 +115,25 @@ UnitySh flat_unity_sh(const glm::vec3& ambient) {
   return sh;
 }
 
+UnitySh operator+(const UnitySh& a, const UnitySh& b) {
+  UnitySh sum;
+  for (int ch = 0; ch < 3; ++ch) {
+    sum.a[ch] = a.a[ch] + b.a[ch];
+    sum.b[ch] = a.b[ch] + b.b[ch];
+  }
+  sum.c = a.c + b.c;
+  return sum;
+}
+
+ShCoefficients light_sh(const glm::vec3& to_light, const glm::vec3& color) {
+  // Radiance pi * color * delta(to_light): its irradiance / pi is
+  // color * max(0, n.to_light), which pack_unity_sh divides back out.
+  std::array<float, 9> y = sh_basis(glm::normalize(to_light));
+  ShCoefficients c;
+  for (int i = 0; i < 9; ++i) c[i] = std::numbers::pi_v<float> * color * y[i];
+  return c;
+}
+
 glm::vec3 eval_unity_sh(const UnitySh& sh, const glm::vec3& n) {
   glm::vec4 n1(n, 1);
   glm::vec4 q(n.x * n.y, n.y * n.z, n.z * n.z, n.z * n.x);

@@ -194,7 +194,7 @@ struct Reader {
   SceneLight light(const json& j, const std::string& path) const {
     check_keys(j, path, {"type", "position", "rotation", "look_at", "color", "intensity", "range", "spot_angle",
                          "inner_spot_angle", "shadows", "shadow_strength", "shadow_bias", "shadow_normal_bias",
-                         "cookie", "cookie_size"});
+                         "cookie", "cookie_size", "render_mode"});
     SceneLight l;
     l.json_path = path;
     if (!j.contains("type")) throw Bad{path, "missing key 'type' (directional, point or spot)"};
@@ -221,6 +221,12 @@ struct Reader {
       if (l.inner_spot_angle < 0 || l.inner_spot_angle > l.spot_angle) {
         throw Bad{join(path, "inner_spot_angle"), "expected an angle from 0 to spot_angle"};
       }
+    }
+    if (j.contains("render_mode")) {
+      l.render_mode = word<LightRenderMode>(member(j, "render_mode"), join(path, "render_mode"),
+                                            {{"auto", LightRenderMode::automatic},
+                                             {"important", LightRenderMode::important},
+                                             {"not_important", LightRenderMode::not_important}});
     }
     shadow_settings(j, path, l);
     cookie(j, path, l);

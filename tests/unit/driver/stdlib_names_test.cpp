@@ -535,7 +535,7 @@ ENDCG
   ASSERT_TRUE(compiled.ok) << compiled.log;
   const package::Package& pkg = compiled.shader->package;
   ASSERT_EQ(pkg.passes.size(), 3u);
-  EXPECT_EQ(pkg.passes[0].variants.size(), 4u * 4u);
+  EXPECT_EQ(pkg.passes[0].variants.size(), 8u * 4u);
   // fwdadd_fullshadows: Unity's 47 combinations, 13 without the shadowmask keywords.
   EXPECT_EQ(pkg.passes[1].variants.size(), 13u * 4u);
   EXPECT_EQ(pkg.passes[2].variants.size(), 2u);

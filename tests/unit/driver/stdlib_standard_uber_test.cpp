@@ -46,10 +46,10 @@ TEST_P(StdlibStandardUberMaterialTest, EveryEngineVariantOfTheMaterialCompilesTo
   EXPECT_EQ(l.diags.error_count(), 0u) << render_text(l.diags, l.sources);
   const package::Package& pkg = compiled->package;
   ASSERT_EQ(pkg.passes.size(), 4u);
-  // fwdbase 4 x fog 4 x instancing 2; fwdadd_fullshadows 13 x fog 4 (Unity's
+  // fwdbase 8 (vertex lights or not) x fog 4 x instancing 2; fwdadd_fullshadows 13 x fog 4 (Unity's
   // 47 without the shadowmask keywords);
   // shadowcaster 2 x instancing 2; meta 1.
-  EXPECT_EQ(pkg.passes[0].variants.size(), 32u);
+  EXPECT_EQ(pkg.passes[0].variants.size(), 64u);
   EXPECT_EQ(pkg.passes[1].variants.size(), 52u);
   EXPECT_EQ(pkg.passes[2].variants.size(), 4u);
   EXPECT_EQ(pkg.passes[3].variants.size(), 1u);

@@ -240,6 +240,44 @@ INSTANTIATE_TEST_SUITE_P(
                 "the vertex modifier 'vert' is not defined"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// ForwardBase adds Shade4PointLights under VERTEXLIGHT_ON in the vertex
+// stage; novertexlights removes the keyword and the code, as in Unity.
+TEST(SurfaceLoweringTest, ForwardBaseLightsFourPointLightsPerVertexUnlessNoVertexLights) {
+  Compiler compiler;
+  auto shader = [&](const std::string& options) {
+    return load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert" + options + "\n" +
+                                   kInput + "void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\nENDCG } }");
+  };
+  auto with = shader("");
+  ASSERT_TRUE(with->shader) << render_text(with->diags, with->sources);
+  std::string code = generated_text(*with, "FORWARD");
+  size_t vertex_light = code.find("#ifdef VERTEXLIGHT_ON\n  o.vertexLight = Shade4PointLights(");
+  EXPECT_NE(vertex_light, std::string::npos) << code;
+  EXPECT_LT(vertex_light, code.find("frag_surf")) << "the vertex stage computes them";
+  EXPECT_NE(code.find("giInput.ambient = IN.vertexLight;"), std::string::npos) << code;
+  Diagnostics diags;
+  auto passes = compiler.select_passes(*with->shader, {}, diags);
+  ASSERT_TRUE(passes);
+  auto declares = [](const SelectedPass& p, const std::string& keyword) {
+    for (const variants::KeywordSet& set : p.keywords.sets) {
+      if (std::find(set.keywords.begin(), set.keywords.end(), keyword) != set.keywords.end()) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(declares((*passes)[0], "VERTEXLIGHT_ON"));
+
+  auto without = shader(" novertexlights");
+  ASSERT_TRUE(without->shader) << render_text(without->diags, without->sources);
+  EXPECT_EQ(without->diags.size(), 0u) << "novertexlights is no longer an option that changes nothing";
+  EXPECT_EQ(generated_text(*without, "FORWARD").find("vertexLight"), std::string::npos);
+  auto plain = compiler.select_passes(*without->shader, {}, diags);
+  ASSERT_TRUE(plain);
+  EXPECT_FALSE(declares((*plain)[0], "VERTEXLIGHT_ON"));
+  CompileOptions options;
+  options.jobs = 2;
+  EXPECT_TRUE(compiler.compile(*with->shader, options, with->sources, diags)) << render_text(diags, with->sources);
+}
+
 TEST(SurfaceLoweringTest, UnknownOptionIsAWarningNotAnError) {
   Compiler compiler;
   auto l = load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert sparkles\n" + kInput +
@@ -301,7 +339,7 @@ TEST(SurfaceLoweringTest, FinalColorScreenPosDecalAndKeepAlphaCompile) {
   CompileOptions options;
   auto compiled = compiler.compile(*l->shader, options, l->sources, l->diags);
   ASSERT_TRUE(compiled) << (l->diags.size() ? l->diags.all()[0].message : "");
-  EXPECT_EQ(compiled->stats.variants, 4u + 5u);
+  EXPECT_EQ(compiled->stats.variants, 8u + 5u);
 }
 
 }  // namespace

@@ -109,6 +109,16 @@ TEST(SceneErrors, UnknownLightTypeListsTheChoices) {
       << r.err;
 }
 
+TEST(SceneErrors, UnknownLightRenderModeListsTheChoices) {
+  Outcome r = render_bad("bad_render_mode", small_scene("[" + object_json("sphere", "Unlit.shader") + "]",
+                                                        R"([{"type": "point", "render_mode": "Important"}])"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("lights[0].render_mode: unknown value 'Important' (expected one of: auto, important, "
+                       "not_important)"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(SceneErrors, NoOutputRequestedIsAnError) {
   Outcome r = facet_render({write_scene("no_output", small_scene("[]"))});
   EXPECT_EQ(r.code, 1);

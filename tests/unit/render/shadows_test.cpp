@@ -151,6 +151,41 @@ TEST_F(ShadowsTest, LaterFramesWithShadowsDrawTheSameImage) {
   EXPECT_EQ(one.hdr, three.hdr);
 }
 
+// A lit floor that only shadows itself: a shadowed light must draw exactly
+// the image of an unshadowed one (no acne), at a steep and at grazing angles.
+TEST_F(ShadowsTest, TheDefaultBiasesLeaveNoAcneOnALitPlane) {
+  std::string standard = example_shader("SurfaceStandard.shader");
+  auto floor_scene = [&](float elevation, const std::string& shadows) {
+    return R"({"width": 96, "height": 64, "ambient": [0.05, 0.05, 0.05],
+             "camera": {"position": [0, 2.5, -3.5], "look_at": [0, 0, 0], "clear_color": [0, 0, 0]},
+             "lights": [{"type": "directional", "rotation": [)" +
+           std::to_string(elevation) + R"(, 30, 0], "intensity": 1.5)" + shadows + R"(}],
+             "objects": [{"name": "floor", "mesh": "plane", "scale": 0.5, "material": {"shader": ")" + standard +
+           R"(", "properties": {"_Color": [0.8, 0.8, 0.8], "_Glossiness": 0}}}]})";
+  };
+  for (float elevation : {70.0f, 35.0f, 15.0f}) {
+    for (const char* mode : {"hard", "soft"}) {
+      std::string name = "acne_" + std::to_string(int(elevation)) + "_" + mode;
+      RenderedFrame plain = render(name + "_plain", floor_scene(elevation, ""));
+      RenderedFrame shadowed =
+          render(name, floor_scene(elevation, std::string(R"(, "shadows": ")") + mode + "\""));
+      ASSERT_EQ(plain.ldr.size(), shadowed.ldr.size());
+      ASSERT_EQ(shadowed.stats.shadow_maps, 1u) << name;
+      ASSERT_EQ(shadowed.stats.shadow_draws, 1u) << name << ": the floor casts into the map";
+      size_t floor_pixels = 0, acne = 0;
+      for (int y = 0; y < plain.height; ++y) {
+        for (int x = 0; x < plain.width; ++x) {
+          if (grey(plain, x, y) < 8) continue;  // not the floor
+          ++floor_pixels;
+          acne += grey(shadowed, x, y) + 2 < grey(plain, x, y);
+        }
+      }
+      EXPECT_GT(floor_pixels, 1000u) << name;
+      EXPECT_EQ(acne, 0u) << name << ": " << acne << " of " << floor_pixels << " floor pixels darkened";
+    }
+  }
+}
+
 TEST_F(ShadowsTest, AFrameCaptureRefusesShadowMaps) {
   FrameCapture capture;
   auto f = try_render("capture", ball_scene(sun(R"(, "shadows": "hard")")), {.capture = &capture});

@@ -100,6 +100,32 @@ TEST(SkySh, ShadeSH9WithThePackedCoefficientsIsTheCosineConvolvedIrradianceWithi
   RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
+TEST(SkySh, ALightInSHGivesItsColourTimesTheClampedCosineUpToTheL2Truncation) {
+  glm::vec3 to_light = glm::normalize(glm::vec3(1, 2, -0.5f));
+  glm::vec3 color(0.8f, 0.4f, 0.2f);
+  UnitySh sh = pack_unity_sh(light_sh(to_light, color));
+  // Bands 0..2 of max(0, cos): 1/4 + 1/2 + 5/16 facing the light, 1/4 - 1/2 + 5/16 behind it.
+  glm::vec3 facing = eval_unity_sh(sh, to_light);
+  glm::vec3 behind = eval_unity_sh(sh, -to_light);
+  for (int ch = 0; ch < 3; ++ch) {
+    EXPECT_NEAR(facing[ch], 1.0625f * color[ch], 1e-4f);
+    EXPECT_NEAR(behind[ch], 0.0625f * color[ch], 1e-4f);
+  }
+  // Sideways the L2 sum is 1/4 - 5/32: still lit a little, as Unity's SH lights are.
+  glm::vec3 side = glm::normalize(glm::cross(to_light, glm::vec3(0, 0, 1)));
+  EXPECT_NEAR(eval_unity_sh(sh, side)[0], (0.25f - 5.0f / 32) * color[0], 1e-4f);
+}
+
+TEST(SkySh, PackingsAddUpAsTheirLightsDo) {
+  UnitySh ambient = flat_unity_sh({0.1f, 0.2f, 0.3f});
+  ShCoefficients light = light_sh({0, 1, 0}, {1, 1, 1});
+  UnitySh sum = ambient + pack_unity_sh(light);
+  glm::vec3 up = eval_unity_sh(sum, {0, 1, 0});
+  EXPECT_NEAR(up.x, 0.1f + 1.0625f, 1e-4f);
+  EXPECT_NEAR(up.z, 0.3f + 1.0625f, 1e-4f);
+  EXPECT_NEAR(eval_unity_sh(sum, {0, -1, 0}).y, 0.2f + 0.0625f, 1e-4f);
+}
+
 TEST(SkySh, CubeFacesPointAlongTheirAxesAndTheTopFaceCentreIsTheZenith) {
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (int f = 0; f < 6; ++f) {

@@ -82,10 +82,10 @@ TEST(ReportLadderTest, UnreachableShortcutKeywordsAreCountedAndNamed) {
   ASSERT_GE(r.passes.size(), 1u);
   const PassReport& base = r.passes[0];
   EXPECT_EQ(ladder(base, "pass").full, BigCount(83));
-  EXPECT_EQ(ladder(base, "pass").reachable, BigCount(4));
-  EXPECT_EQ(ladder(base, "pass").after_strip, 4u);
-  std::vector<std::string> expected = {"LIGHTMAP_ON",        "DIRLIGHTMAP_COMBINED",   "DYNAMICLIGHTMAP_ON",
-                                       "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING", "VERTEXLIGHT_ON"};
+  EXPECT_EQ(ladder(base, "pass").reachable, BigCount(8));
+  EXPECT_EQ(ladder(base, "pass").after_strip, 8u);
+  std::vector<std::string> expected = {"LIGHTMAP_ON", "DIRLIGHTMAP_COMBINED", "DYNAMICLIGHTMAP_ON", "SHADOWS_SHADOWMASK",
+                                       "LIGHTMAP_SHADOW_MIXING"};
   std::vector<std::string> names = base.unreachable_keywords;
   std::sort(names.begin(), names.end());
   std::sort(expected.begin(), expected.end());
@@ -94,8 +94,8 @@ TEST(ReportLadderTest, UnreachableShortcutKeywordsAreCountedAndNamed) {
   EXPECT_NE(text.find("unreachable: "), std::string::npos) << text;
   EXPECT_NE(text.find("not built unless --build-unreachable"), std::string::npos) << text;
   auto json = nlohmann::json::parse(to_json({r}));
-  EXPECT_EQ(json["shaders"][0]["passes"][0]["ladder"][0]["reachable"], 4);
-  EXPECT_EQ(json["shaders"][0]["passes"][0]["unreachable_keywords"].size(), 6u);
+  EXPECT_EQ(json["shaders"][0]["passes"][0]["ladder"][0]["reachable"], 8);
+  EXPECT_EQ(json["shaders"][0]["passes"][0]["unreachable_keywords"].size(), 5u);
   // ForwardAdd's shortcut has no unreachable keywords.
   ASSERT_GE(r.passes.size(), 2u);
   EXPECT_TRUE(r.passes[1].unreachable_keywords.empty());
@@ -117,7 +117,9 @@ TEST(ReportFindingsTest, FreeAndDeadKeywords) {
   const PassReport& base = phong.passes.at(0);
   EXPECT_TRUE(has_finding(base, FindingKind::dead, "LIGHTPROBE_SH"));
   EXPECT_FALSE(has_finding(base, FindingKind::dead, "SHADOWS_SCREEN"));
-  EXPECT_EQ(ladder(base, "pass").programs, 8u);
+  // Eight variants: eight vertex programs (VERTEXLIGHT_ON applies to the
+  // vertex stage only) and four fragment programs.
+  EXPECT_EQ(ladder(base, "pass").programs, 12u);
   EXPECT_EQ(ladder(base, "pass").unique_tokens, 4u);
 }
 

@@ -67,6 +67,11 @@ enum class LightType { directional, point, spot };
 // Unity's LightShadows: soft filters 3x3 comparisons (percentage-closer filtering).
 enum class ShadowMode { none, hard, soft };
 
+// Unity's LightRenderMode: an important light is always a pixel light, a
+// light that is not important never is (it lights per vertex or through SH),
+// and auto lights fill the remaining pixel-light slots by importance.
+enum class LightRenderMode { automatic, important, not_important };
+
 struct SceneLight {
   LightType type = LightType::directional;
   std::string json_path;    // "lights[1]"
@@ -85,6 +90,7 @@ struct SceneLight {
   // cookie_size world units in the light's XY plane. Point lights have none.
   std::optional<SceneTexture> cookie;
   float cookie_size = 10;   // directional, world units (Unity's Light.cookieSize)
+  LightRenderMode render_mode = LightRenderMode::automatic;
 };
 
 // A procedural sky for the ambient light (sRGB-authored colours): radiance

@@ -58,6 +58,16 @@ UnitySh pack_unity_sh(const ShCoefficients& radiance);
 // The packing of a flat ambient colour: L0 only, (0, 0, 0, colour).
 UnitySh flat_unity_sh(const glm::vec3& ambient);
 
+// The sum of two packings: the SH of both light distributions together.
+UnitySh operator+(const UnitySh& a, const UnitySh& b);
+
+// The projection of a light of colour `color` arriving from unit direction
+// `to_light` (a directional light, or a point light seen from far away):
+// a delta scaled so that its packing gives color * max(0, n.to_light) up to
+// the L2 truncation (1.0625 * color facing the light, 0.0625 * color at
+// its back), as Unity's SH lights do.
+ShCoefficients light_sh(const glm::vec3& to_light, const glm::vec3& color);
+
 // The CPU twin of FacetSHEval (clamped at 0 as the shader does).
 glm::vec3 eval_unity_sh(const UnitySh& sh, const glm::vec3& n);
 
