@@ -141,6 +141,11 @@ struct Program {
   // The LightMode tag of the pass that runs it ("" when none): Unity's
   // compiler defines UNITY_PASS_<MODE> from it (UNITY_PASS_META, ...).
   std::string light_mode;
+  // The .shader file the program was written in when that is not the shader
+  // holding it: a pass taken from another shader by UsePass or a Fallback.
+  // kNoFile: the holding shader's own file. Includes are found relative to
+  // this file, and messages point into it.
+  FileId home_file = kNoFile;
   bool is_surface() const { return !surface_function.empty(); }
   bool has_stage(Stage s) const { return !entry_points[size_t(s)].empty(); }
 };
@@ -155,6 +160,14 @@ struct Pass {
   std::optional<Program> program;  // normal passes only
   std::string use_pass;            // use_pass: "Shader/PASSNAME"
   std::string grab_texture;        // grab_pass: "" means _GrabTexture
+  // Where a pass taken from another shader came from, as Unity names it:
+  // `UsePass "Legacy Shaders/VertexLit/SHADOWCASTER"`, `Fallback "Diffuse"`;
+  // empty for the shader's own passes.
+  std::string origin;
+  // A ShadowCaster that surface-shader lowering generated in place of the
+  // Fallback's (as Legacy VertexLit's): the Fallback's own replaces it when
+  // the Fallback is found.
+  bool fallback_stand_in = false;
   SourceSpan span;
 
   // The value of a tag, case-insensitive key; "" if absent.
@@ -184,11 +197,17 @@ struct Shader {
   std::vector<Property> properties;  // in file order
   std::vector<SubShader> subshaders; // in file order, Category blocks flattened
   std::optional<std::string> fallback;  // absent: none; "Off" is kept as absent
+  SourceSpan fallback_span;             // the Fallback command, when there is one
   std::string custom_editor;
   FileId file = kNoFile;
   SourceSpan span;
 
   const Property* find_property(std::string_view name) const;
 };
+
+// The file a program of `shader` was written in (Program::home_file).
+inline FileId program_file(const Shader& shader, const Program& program) {
+  return program.home_file != kNoFile ? program.home_file : shader.file;
+}
 
 }  // namespace facet::ir

@@ -32,8 +32,10 @@ namespace {
 
 bool is_hlsl(const ir::Program& program) { return program.language != ir::ProgramLanguage::glsl; }
 
-std::string shader_path(const ir::Shader& shader, const SourceMap& sources) {
-  return shader.file != kNoFile && shader.file < sources.file_count() ? sources.path(shader.file) : std::string();
+// The file whose folder a program's relative includes are found from.
+std::string program_path(const ir::Shader& shader, const ir::Program& program, const SourceMap& sources) {
+  FileId file = ir::program_file(shader, program);
+  return file != kNoFile && file < sources.file_count() ? sources.path(file) : std::string();
 }
 
 std::string stdlib_dir(const BackendOptions& options) {
@@ -165,14 +167,14 @@ Result<std::string> preprocess_source(const ir::Shader& shader, const ir::Progra
                                       SourceMap& sources, Diagnostics& diags,
                                       std::vector<std::string>* included_files,
                                       const std::shared_ptr<IncludeScanCache>& scan_cache) {
-  AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
+  AssembledSource source = assemble_source(program, stage, keywords, options, program_path(shader, program, sources));
   std::unique_ptr<FileIncluder> includer =
       checked_includer(program, source, options, stdlib_dir(options), diags, scan_cache);
   if (!includer) return failure("input limit");
   GlslangOutput out = preprocess_glslang(source, program.language, stage, options, *includer);
   add_included_files(*includer, sources);
   if (included_files) *included_files = included_paths(*includer);
-  LogContext context{program, stage, shader.file, source, *includer, sources,
+  LogContext context{program, stage, ir::program_file(shader, program), source, *includer, sources,
                      is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error};
   report_logs(out, context, diags);
   if (!out.ok) return failure("preprocessing failed");
@@ -194,7 +196,7 @@ Result<SourceText> Backend::source_text(const ir::Shader& shader, const ir::Prog
                                         SourceMap& sources, Diagnostics& diags) const {
   if (!request.preprocess) {
     return SourceText{
-        .text = assemble_source(program, request.stage, request.keywords, options, shader_path(shader, sources)).text};
+        .text = assemble_source(program, request.stage, request.keywords, options, program_path(shader, program, sources)).text};
   }
   std::string timeout = time_limit_message(program, request.stage, options, sources);
   SourceText out;
@@ -341,7 +343,7 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
   Result<std::string> entry = entry_point(program, stage, diags);
   if (!entry) return unexpected(entry.error());
   size_t errors_before = diags.error_count();
-  AssembledSource source = assemble_source(program, stage, keywords, options, shader_path(shader, sources));
+  AssembledSource source = assemble_source(program, stage, keywords, options, program_path(shader, program, sources));
   std::unique_ptr<FileIncluder> includer =
       checked_includer(program, source, options, stdlib_dir(options), diags, scan_cache);
   if (!includer) return failure("input limit");
@@ -372,7 +374,7 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
     retry.body.text = rewrite_assigned_uniforms(retry.body.text, more_assigned);
     std::vector<std::string> all_assigned = assigned;
     all_assigned.insert(all_assigned.end(), more_assigned.begin(), more_assigned.end());
-    AssembledSource retry_source = assemble_source(retry, stage, keywords, options, shader_path(shader, sources));
+    AssembledSource retry_source = assemble_source(retry, stage, keywords, options, program_path(shader, program, sources));
     Diagnostics refused;  // the program's text passed these checks before its rewrites
     std::unique_ptr<FileIncluder> retry_includer =
         checked_includer(retry, retry_source, options, stdlib_dir(options), refused, scan_cache);
@@ -395,7 +397,7 @@ Result<CompiledVariant> compile_stage(const ir::Shader& shader, const ir::Progra
   }
   const ir::Program& compiled = cast_program ? *cast_program : program;
   add_included_files(*includer, sources);
-  LogContext context{compiled, stage, shader.file, source, *includer, sources,
+  LogContext context{compiled, stage, ir::program_file(shader, program), source, *includer, sources,
                      is_hlsl(program) ? DiagId::hlsl_error : DiagId::glsl_error, out.preprocessed};
   report_logs(out, context, diags);
   if (out.ok) {

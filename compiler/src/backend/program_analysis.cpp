@@ -191,7 +191,8 @@ namespace {
 Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& program,
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
                                 SourceMap& sources, Diagnostics& diags, const CrashIsolation* isolation) {
-  std::string path = shader.file != kNoFile && shader.file < sources.file_count() ? sources.path(shader.file) : "";
+  const FileId home = ir::program_file(shader, program);
+  std::string path = home != kNoFile && home < sources.file_count() ? sources.path(home) : "";
   std::string stdlib = options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir;
   ProgramAnalysis analysis;
   auto parse = [&](const ir::Program& p, AssembledSource& source, FileIncluder& includer) {
@@ -230,7 +231,7 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
     }
   }
   add_included_files(*includer, sources);
-  LogContext context{program, Stage::fragment, shader.file, source, *includer, sources, DiagId::hlsl_error};
+  LogContext context{program, Stage::fragment, home, source, *includer, sources, DiagId::hlsl_error};
   report_info_log(out.parse_log, context, diags);
   if (!out.ok) return failure("the program does not parse");
   return analysis;

@@ -27,23 +27,22 @@ bool pass_requested(const ir::Pass& pass, size_t index, const std::vector<std::s
   return false;
 }
 
-// "Shader/PASSNAME" naming a pass of this same shader; other shaders are not
-// searched (facet compiles one file at a time).
+// "Shader/PASSNAME" naming a pass of this same shader. A UsePass naming
+// another shader that is still a UsePass here was not found when the shader
+// was loaded, which said why (link.h).
 const ir::Pass* resolve_use_pass(const ir::Shader& shader, const ir::Pass& use, Diagnostics& diags) {
   auto slash = use.use_pass.rfind('/');
   std::string shader_name = slash == std::string::npos ? "" : use.use_pass.substr(0, slash);
   std::string pass_name = upper(slash == std::string::npos ? use.use_pass : use.use_pass.substr(slash + 1));
-  if (shader_name == shader.name) {
-    for (const ir::SubShader& sub : shader.subshaders) {
-      for (const ir::Pass& p : sub.passes) {
-        if (p.kind == ir::PassKind::normal && upper(p.name) == pass_name) return &p;
-      }
+  if (shader_name != shader.name) return nullptr;
+  for (const ir::SubShader& sub : shader.subshaders) {
+    for (const ir::Pass& p : sub.passes) {
+      if (p.kind == ir::PassKind::normal && upper(p.name) == pass_name) return &p;
     }
   }
   diags.add(DiagId::driver_usepass_unresolved, use.span,
-            fmt::format("UsePass '{}' is not resolved: facet only finds passes of the same shader file; the pass is "
-                        "skipped",
-                        use.use_pass));
+            fmt::format("UsePass '{}' is not resolved: this shader has no pass named '{}'; the pass is skipped",
+                        use.use_pass, use.use_pass.substr(slash + 1)));
   return nullptr;
 }
 

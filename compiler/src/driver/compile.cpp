@@ -145,6 +145,9 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
   size_t next_stage = 0;
   fill_shader_level(ctx.shader, ctx.passes.empty() ? nullptr : &ctx.passes.front(), pkg);
   std::set<std::string> dependencies{ctx.sources.path(ctx.shader.file)};
+  for (const SelectedPass& sel : ctx.passes) {  // passes taken from other shaders (UsePass, Fallback)
+    if (sel.ir.program) dependencies.insert(ctx.sources.path(ir::program_file(ctx.shader, *sel.ir.program)));
+  }
   std::map<size_t, uint32_t> blob_of;  // compiling task -> blob index
   bool failed = false;
   for (size_t p = 0; p < ctx.passes.size(); ++p) {

@@ -71,11 +71,12 @@ std::string key_context(const ir::Shader& shader, const ir::Program& program, St
 
 // What else decides which files an #include finds: the search path and the
 // including file's folder (absolute, so any working folder finds the entry).
-std::string search_context(const ir::Shader& shader, const backend::BackendOptions& options,
-                           const SourceMap& sources) {
+std::string search_context(const ir::Shader& shader, const ir::Program& program,
+                           const backend::BackendOptions& options, const SourceMap& sources) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  std::string context = "|direct|" + fs::absolute(sources.path(shader.file), ec).lexically_normal().string();
+  const std::string home = sources.path(ir::program_file(shader, program));
+  std::string context = "|direct|" + fs::absolute(home, ec).lexically_normal().string();
   for (const std::string& dir : options.include_dirs) context += "|I" + fs::absolute(dir, ec).string();
   context += "|stdlib " + (options.stdlib_dir.empty() ? backend::default_stdlib_dir() : options.stdlib_dir);
   for (const auto& [name, value] : options.defines) context += "|D" + name + "=" + value;
@@ -248,7 +249,7 @@ PreprocessCounters preprocess_tasks(const BuildContext& ctx, Plan& plan) {
                                                options.backend, ctx.sources, ignored);
       const std::string context = key_context(ctx.shader, program, t.stage, options.backend);
       if (assembled) {
-        t.manifest_key = hex_key(context + search_context(ctx.shader, options.backend, ctx.sources), assembled->text);
+        t.manifest_key = hex_key(context + search_context(ctx.shader, program, options.backend, ctx.sources), assembled->text);
       }
       std::vector<std::string> found;
       bool hit = assembled && key_from_manifest(ctx, t, file_hashes, found);

@@ -81,6 +81,7 @@ Json pass(const ir::Pass& p) {
   j["name"] = p.name;
   if (p.kind == ir::PassKind::use_pass) j["use_pass"] = p.use_pass;
   if (p.kind == ir::PassKind::grab_pass) j["grab_texture"] = p.grab_texture;
+  if (!p.origin.empty()) j["origin"] = p.origin;
   j["tags"] = tags_json(p.tags);
   j["state"] = render_state_json(p.state);
   if (p.program) j["program"] = program(*p.program);

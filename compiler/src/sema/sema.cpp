@@ -136,7 +136,10 @@ Result<ir::Shader> analyze(const ast::Shader& shader, const SourceMap& sources, 
   out.file = shader.file;
   out.span = shader.span;
   out.custom_editor = shader.custom_editor;
-  if (shader.fallback && !shader.fallback_off && !iequals(*shader.fallback, "Off")) out.fallback = shader.fallback;
+  if (shader.fallback && !shader.fallback_off && !iequals(*shader.fallback, "Off")) {
+    out.fallback = shader.fallback;
+    out.fallback_span = shader.fallback_span;
+  }
   out.properties = lower_properties(shader.properties, ctx);
   for (const ir::Property& p : out.properties) ctx.property_names.push_back(p.name);
   Scope root;

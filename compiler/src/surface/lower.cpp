@@ -213,6 +213,7 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
     bool tessellated = directive->tessellated() && info.kind != GeneratedPass::fallback_shadow_caster;
     pass.program = wrap(user, file, pass_pragmas(user, info.kind, *directive, tessellated), tessellated);
     pass.program->light_mode = info.light_mode;
+    pass.fallback_stand_in = info.kind == GeneratedPass::fallback_shadow_caster;
     pass.span = user.body.span;
     out.push_back(std::move(pass));
   }

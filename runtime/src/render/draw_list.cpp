@@ -149,6 +149,21 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
 
 namespace {
 
+// The textures of the GrabPasses written between the selected pass before
+// `p` (or the SubShader's start) and `p`. A package keeps no GrabPass.
+std::vector<std::string> grab_passes_before(const ShaderAsset& asset, size_t p) {
+  std::vector<std::string> out;
+  const SelectedPass& sel = asset.passes[p];
+  if (sel.subshader >= asset.shader.subshaders.size()) return out;
+  const std::vector<ir::Pass>& written = asset.shader.subshaders[sel.subshader].passes;
+  size_t from = p == 0 ? 0 : asset.passes[p - 1].pass + 1;
+  for (size_t i = from; i < sel.pass && i < written.size(); ++i) {
+    if (written[i].kind != ir::PassKind::grab_pass) continue;
+    out.push_back(written[i].grab_texture.empty() ? kGrabTexture : written[i].grab_texture);
+  }
+  return out;
+}
+
 struct Builder {
   const Context& context;
   const Scene& scene;
@@ -156,6 +171,7 @@ struct Builder {
   const LightSetup& lights;
   ShaderLibrary& library;
   DrawListResult out;
+  const UnitySh ambient = ambient_sh(scene);  // once a frame: a sky's is a projection
 
   Result<void, RenderError> add(ObjectState& object, size_t pass_index, const LightValues* light,
                                 const std::vector<std::string>& global, DrawRecord record) {
@@ -215,7 +231,7 @@ struct Builder {
     }
     if (!scheduled.vertex.empty() || !scheduled.sh.empty()) {
       light = &out.draw_lights.emplace_back(
-          forward_base_values(*light, scene, scheduled.vertex, scheduled.sh, object.center));
+          forward_base_values(*light, scene, ambient, scheduled.vertex, scheduled.sh, object.center));
     }
     return add(object, p, light, global, std::move(record));
   }
@@ -226,59 +242,78 @@ struct Builder {
     bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
                                       [](const SelectedPass& p) { return forward_mode(p.ir); });
     ObjectLights scheduled = schedule_lights(scene, lights, object);
+    std::vector<std::string> grabs;  // of GrabPasses not yet followed by a draw
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       const ir::Pass& pass = object.shader->passes[p].ir;
-      DrawRecord record = pass_record(object, p);
-      std::string why;
-      Role role = role_of(pass, forward_shader, why);
-      if (role == Role::skip) {
-        record.drawn = false;
-        record.why = why;
-        out.skipped.push_back(record);
-        continue;
+      std::vector<std::string> before = grab_passes_before(*object.shader, p);
+      grabs.insert(grabs.end(), before.begin(), before.end());
+      const size_t first_draw = out.draws.size();
+      Result<void, RenderError> drawn = pass_draws(object, p, pass, scheduled, fog, fog_note, forward_shader);
+      if (!drawn) return drawn;
+      if (out.draws.size() > first_draw && !grabs.empty()) {
+        Draw& d = out.draws[first_draw];
+        d.record.why += fmt::format("; after GrabPass: the screen copied into {}", join(grabs));
+        d.grab_before = std::move(grabs);
+        grabs.clear();
       }
-      if (role == Role::vertex) {
-        FACET_TRY(vertex_lit_draw(object, p, fog, fog_note, record));
-        continue;
+    }
+    return {};
+  }
+
+  // The draws of pass `p` of `object`: none (skipped), one, or one per light.
+  Result<void, RenderError> pass_draws(ObjectState& object, size_t p, const ir::Pass& pass,
+                                       const ObjectLights& scheduled, const std::vector<std::string>& fog,
+                                       const std::string& fog_note, bool forward_shader) {
+    DrawRecord record = pass_record(object, p);
+    std::string why;
+    Role role = role_of(pass, forward_shader, why);
+    if (role == Role::skip) {
+      record.drawn = false;
+      record.why = why;
+      out.skipped.push_back(record);
+      return {};
+    }
+    if (role == Role::vertex) return vertex_lit_draw(object, p, fog, fog_note, record);
+    if (role == Role::once) {
+      record.why = "no LightMode: drawn once, without a light" + fog_note;
+      return add(object, p, &lights.none, fog, record);
+    }
+    if (role == Role::base) return base_draw(object, p, scheduled, fog, fog_note, record);
+    return additive_draws(object, p, scheduled, fog, fog_note, record);
+  }
+
+  // ForwardAdd: one draw per further pixel light.
+  Result<void, RenderError> additive_draws(ObjectState& object, size_t p, const ObjectLights& scheduled,
+                                           const std::vector<std::string>& fog, const std::string& fog_note,
+                                           DrawRecord record) {
+    const std::vector<size_t>& extra = scheduled.pixel;
+    if (extra.empty()) {
+      record.drawn = false;
+      record.why = "ForwardAdd: no further per-pixel light reaches the object";
+      out.skipped.push_back(record);
+    }
+    for (size_t k = 0; k < extra.size(); ++k) {
+      const LightValues& light = lights.lights[extra[k]];
+      std::vector<std::string> global = {light.keyword};
+      global.insert(global.end(), fog.begin(), fog.end());
+      DrawRecord add_record = record;
+      add_record.additive = true;
+      add_record.light = light_name(scene, extra[k]);
+      bool important = scene.lights[extra[k]].render_mode == LightRenderMode::important;
+      add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}{}, additive", k + 1, extra.size(),
+                                   important ? " (important: always a pixel light)" : "") +
+                       fog_note;
+      if (light.shadowed) {
+        std::vector<std::string> shadows = shadow_keywords(scene.lights[extra[k]]);
+        global.insert(global.end(), shadows.begin(), shadows.end());
+        add_record.why += "; its shadows: " + join(shadows);
       }
-      if (role == Role::once) {
-        record.why = "no LightMode: drawn once, without a light" + fog_note;
-        FACET_TRY(add(object, p, &lights.none, fog, record));
-        continue;
+      const SceneLight& scene_light = scene.lights[extra[k]];
+      if (scene_light.type == LightType::point && scene_light.shadows != ShadowMode::none) {
+        add_record.why += "; point-light shadows are not rendered";
       }
-      if (role == Role::base) {
-        FACET_TRY(base_draw(object, p, scheduled, fog, fog_note, record));
-        continue;
-      }
-      const std::vector<size_t>& extra = scheduled.pixel;
-      if (extra.empty()) {
-        record.drawn = false;
-        record.why = "ForwardAdd: no further per-pixel light reaches the object";
-        out.skipped.push_back(record);
-      }
-      for (size_t k = 0; k < extra.size(); ++k) {
-        const LightValues& light = lights.lights[extra[k]];
-        std::vector<std::string> global = {light.keyword};
-        global.insert(global.end(), fog.begin(), fog.end());
-        DrawRecord add_record = record;
-        add_record.additive = true;
-        add_record.light = light_name(scene, extra[k]);
-        bool important = scene.lights[extra[k]].render_mode == LightRenderMode::important;
-        add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}{}, additive", k + 1, extra.size(),
-                                     important ? " (important: always a pixel light)" : "") +
-                         fog_note;
-        if (light.shadowed) {
-          std::vector<std::string> shadows = shadow_keywords(scene.lights[extra[k]]);
-          global.insert(global.end(), shadows.begin(), shadows.end());
-          add_record.why += "; its shadows: " + join(shadows);
-        }
-        const SceneLight& scene_light = scene.lights[extra[k]];
-        if (scene_light.type == LightType::point && scene_light.shadows != ShadowMode::none) {
-          add_record.why += "; point-light shadows are not rendered";
-        }
-        if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
-        FACET_TRY(add(object, p, &light, global, add_record));
-      }
+      if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
+      FACET_TRY(add(object, p, &light, global, add_record));
     }
     return {};
   }

@@ -51,7 +51,15 @@ struct Draw {
   LoadedVariant* variant = nullptr;
   PipelineState state;
   DrawRecord record;
+  // GrabPass textures to copy the screen into before this draw: the shader's
+  // GrabPasses between its previous drawn pass and this one ("_GrabTexture"
+  // for `GrabPass { }`, grabbed every time; a named one only the first time
+  // in the frame, as Unity grabs it once).
+  std::vector<std::string> grab_before;
 };
+
+// The texture `GrabPass { }` fills.
+inline constexpr const char* kGrabTexture = "_GrabTexture";
 
 // "lights[1] (point)"
 std::string light_description(const Scene& scene, size_t light);

@@ -196,8 +196,9 @@ UnitySh ambient_sh(const Scene& scene) {
   return pack_unity_sh(project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); }));
 }
 
-LightValues forward_base_values(const LightValues& main, const Scene& scene, const std::vector<size_t>& vertex,
-                                const std::vector<size_t>& sh_lights, const glm::vec3& object_center) {
+LightValues forward_base_values(const LightValues& main, const Scene& scene, const UnitySh& ambient,
+                                const std::vector<size_t>& vertex, const std::vector<size_t>& sh_lights,
+                                const glm::vec3& object_center) {
   LightValues l = main;
   l.source = main.scene_light();
   constexpr size_t kSlots = 4;
@@ -221,7 +222,7 @@ LightValues forward_base_values(const LightValues& main, const Scene& scene, con
   // SH lights as Unity adds them to an object's probe: each light's colour
   // at the object's centre, from its direction there (a spot as a point
   // light: its cone is not taken into account).
-  UnitySh sh = ambient_sh(scene);
+  UnitySh sh = ambient;
   for (size_t index : sh_lights) {
     const SceneLight& light = scene.lights[index];
     LightValues values = light_values(light);

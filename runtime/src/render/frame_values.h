@@ -72,10 +72,12 @@ UnitySh ambient_sh(const Scene& scene);
 // A ForwardBase draw's light when lights beyond the pixel lights reach the
 // object: `main`'s values plus the four per-vertex point lights `vertex`
 // (unity_4LightPosX0/Y0/Z0 in world space, unity_4LightAtten0 = 25 /
-// range^2, unity_LightColor[0..3]; the other slots black) and the ambient SH
-// with the lights `sh_lights` added as seen from `object_center`.
-LightValues forward_base_values(const LightValues& main, const Scene& scene, const std::vector<size_t>& vertex,
-                                const std::vector<size_t>& sh_lights, const glm::vec3& object_center);
+// range^2, unity_LightColor[0..3]; the other slots black) and `ambient`
+// (ambient_sh of the scene) with the lights `sh_lights` added as seen from
+// `object_center`.
+LightValues forward_base_values(const LightValues& main, const Scene& scene, const UnitySh& ambient,
+                                const std::vector<size_t>& vertex, const std::vector<size_t>& sh_lights,
+                                const glm::vec3& object_center);
 
 UniformValues draw_uniforms(const glm::mat4& object_to_world);
 

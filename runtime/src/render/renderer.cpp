@@ -19,6 +19,7 @@
 #include "render/background.h"
 #include "render/capture.h"
 #include "render/draw_list.h"
+#include "render/grab.h"
 #include "render/post.h"
 #include "render/resources.h"
 #include "render/shadow_pass.h"
@@ -40,6 +41,9 @@ double median(std::vector<double> values) {
 struct FrameObjects {
   VkDevice device = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
+  // With GrabPasses: the parts before the first grab and between grabs
+  // (the last part is render_pass with its colour loaded).
+  VkRenderPass first_part = VK_NULL_HANDLE, middle_part = VK_NULL_HANDLE, last_part = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkPipelineCache cache = VK_NULL_HANDLE;
@@ -48,7 +52,9 @@ struct FrameObjects {
     vkDeviceWaitIdle(device);
     if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
     if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
-    if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
+    for (VkRenderPass p : {render_pass, first_part, middle_part, last_part}) {
+      if (p) vkDestroyRenderPass(device, p, nullptr);
+    }
     if (cache) vkDestroyPipelineCache(device, cache, nullptr);
   }
 };
@@ -98,25 +104,39 @@ VkFormat depth_format(const Context& context) {
   return stencil ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
 }
 
-// `sampled`: the colour (and with `depth_sampled` the depth) image ends in
-// SHADER_READ_ONLY_OPTIMAL for the image-effect chain instead of being read back.
-Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth, bool sampled = false,
-                                                   bool depth_sampled = false) {
+// How a render pass of the scene begins and ends. A frame with GrabPasses
+// is drawn in parts split at each grab (grab.h): every part but the first
+// loads what the one before left, every part but the last leaves the colour
+// ready to be copied and keeps the depth.
+struct PassEnds {
+  bool load = false;     // continue the previous part (else clear)
+  bool to_grab = false;  // a grab follows: colour to TRANSFER_SRC_OPTIMAL, depth stored
+  // The last part: the colour (and with `depth_sampled` the depth) ends in
+  // SHADER_READ_ONLY_OPTIMAL for the image-effect chain instead of being read back.
+  bool sampled = false;
+  bool depth_sampled = false;
+};
+
+Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth, const PassEnds& ends) {
   VkAttachmentDescription attachments[2]{};
   attachments[0].format = VK_FORMAT_R16G16B16A16_SFLOAT;
   attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[0].loadOp = ends.load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  attachments[0].finalLayout = sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  attachments[0].initialLayout = ends.load ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[0].finalLayout = ends.sampled && !ends.to_grab ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+                                                             : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   attachments[1] = attachments[0];
   attachments[1].format = depth;
-  attachments[1].storeOp = depth_sampled ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  attachments[1].finalLayout = depth_sampled ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
-                                             : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  bool keep_depth = ends.to_grab || ends.depth_sampled;
+  attachments[1].storeOp = keep_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].stencilLoadOp = ends.load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[1].stencilStoreOp = ends.to_grab ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].initialLayout = ends.load ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[1].finalLayout = ends.depth_sampled && !ends.to_grab ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+                                                                   : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
@@ -689,7 +709,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (!depth_image) return unexpected(error(describe(depth_image.error())));
   PostTargets targets;
   if (post) FACET_TRY(make_post_targets(context, targets, frame.width, frame.height));
-  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth, post != nullptr, depth_sampled);
+  const PassEnds last_part{.load = false, .sampled = post != nullptr, .depth_sampled = depth_sampled};
+  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth, last_part);
   if (!pass) return unexpected(pass.error());
   fo.render_pass = *pass;
   VkImageView views[2] = {color->view(), depth_image->view()};
@@ -716,6 +737,20 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
     pipelines.push_back(*p);
     frame.stats.pipelines += created;
+  }
+  Result<GrabPlan, RenderError> grab_plan =
+      plan_grabs(context, scene, list->draws, uint32_t(frame.width), uint32_t(frame.height));
+  if (!grab_plan) return unexpected(grab_plan.error());
+  GrabPlan& grabs = *grab_plan;
+  if (!grabs.points.empty()) {
+    if (options.capture) return unexpected(error(scene.path + ": a frame capture does not cover GrabPass"));
+    PassEnds first{.to_grab = true}, middle{.load = true, .to_grab = true}, last = last_part;
+    last.load = true;
+    for (auto [ends, out] : {std::pair{first, &fo.first_part}, {middle, &fo.middle_part}, {last, &fo.last_part}}) {
+      Result<VkRenderPass, RenderError> part = make_render_pass(context.device(), depth, ends);
+      if (!part) return unexpected(part.error());
+      *out = *part;
+    }
   }
   ShadowPasses shadows;
   FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, list->draws, library, fo.cache, shadows,
@@ -794,7 +829,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     clears[0].color = {{clear.r, clear.g, clear.b, scene.camera.clear_color[3]}};
     clears[1].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = fo.render_pass;
+    begin.renderPass = grabs.points.empty() ? fo.render_pass : fo.first_part;
     begin.framebuffer = fo.framebuffer;
     begin.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
     begin.clearValueCount = 2;
@@ -804,9 +839,26 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &scissor);
+    recorder.overrides.clear();
+    for (auto& [name, image] : grabs.images) recorder.overrides[name] = &image;
+    std::map<std::string, bool> grabbed;
+    size_t next_grab = 0;
     for (size_t i = 0; i < list->draws.size() && !failed; ++i) {
       const Draw& d = list->draws[i];
       const ObjectState& object = objects[d.object];
+      if (next_grab < grabs.points.size() && grabs.points[next_grab].draw == i) {
+        vkCmdEndRenderPass(commands);
+        record_grab(commands, *color, grabs.points[next_grab], grabs, grabbed);
+        frame.stats.grabs += grabs.points[next_grab].names.size();
+        ++next_grab;
+        VkRenderPassBeginInfo part = begin;
+        part.renderPass = next_grab < grabs.points.size() ? fo.middle_part : fo.last_part;
+        part.clearValueCount = 0;
+        part.pClearValues = nullptr;
+        vkCmdBeginRenderPass(commands, &part, VK_SUBPASS_CONTENTS_INLINE);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &scissor);
+      }
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[i]);
       std::optional<CapturedDraw> captured;
       if (capturing) {
@@ -868,6 +920,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   for (int f = 0; f < options.frames; ++f) {
     Clock::time_point frame_start = Clock::now();
     frame.stats.triangles = 0;
+    frame.stats.grabs = 0;
     // In place: the kept blocks point at these values.
     if (f > 0) frame_values.assign(per_frame_uniforms(scene, camera, frame.width, frame.height));
     VkResultOf<void> submitted = submitter.submit([&](VkCommandBuffer c) { record(c, f == 0 && capture); });

@@ -5,7 +5,7 @@
 
 #include "facet/compiler.h"
 #include "facet/runtime/shader_compiler.h"
-#include "shader_search.h"
+#include "facet/shader_search.h"
 
 namespace facet::runtime {
 
@@ -42,7 +42,9 @@ std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerO
                                {compiled->dependencies.begin(), compiled->dependencies.end()}};
   };
   if (!options.shader_dirs.empty()) {
-    out->find = [dirs = options.shader_dirs](const std::string& name) { return find_shader_file(dirs, name); };
+    std::vector<ShaderDir> dirs;
+    for (const std::string& dir : options.shader_dirs) dirs.push_back({dir, true});
+    out->find = [dirs = std::move(dirs)](const std::string& name) { return find_shader_file(dirs, name); };
   }
   return out;
 }

@@ -41,6 +41,7 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
     out << fmt::format("shadow maps: {} ({} caster draws), camera depth texture: {} draws\n", f.stats.shadow_maps,
                        f.stats.shadow_draws, f.stats.depth_texture_draws);
   }
+  if (f.stats.grabs) out << fmt::format("GrabPass copies of the screen: {}\n", f.stats.grabs);
   if (f.stats.frame_ms.size() > 1) {
     std::vector<double> host = f.stats.frame_ms, gpu_frames = f.stats.frame_gpu_ms;
     std::sort(host.begin(), host.end());

@@ -104,7 +104,9 @@ TEST_F(LightScheduleTest, AnImportantLightIsAPixelLightBeyondTheCountAndANotImpo
   RenderedFrame important = render("important", with_pixel_lights(small_scene(objects, lights("important")), 1));
   EXPECT_EQ(additive_lights(important), (std::vector<std::string>{"lights[1] (point)"}));
   for (const DrawRecord& d : important.draws) {
-    if (d.additive) EXPECT_NE(d.why.find("(important: always a pixel light)"), std::string::npos) << d.why;
+    if (d.additive) {
+      EXPECT_NE(d.why.find("(important: always a pixel light)"), std::string::npos) << d.why;
+    }
   }
   ASSERT_NE(base_draw(important), nullptr);
   EXPECT_FALSE(has(base_draw(important)->keywords, "VERTEXLIGHT_ON"));

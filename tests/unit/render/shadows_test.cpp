@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "facet/runtime/frame_capture.h"
 #include "facet/runtime/scene.h"
@@ -22,8 +24,9 @@ int grey(const RenderedFrame& f, int x, int y) { return f.ldr[(size_t(y) * f.wid
 // +Z throws the ball's shadow 0.58 towards +Z: pixel (32, 23); (32, 41) is
 // the floor on the other side, lit.
 std::string ball_scene(const std::string& lights, const std::string& extra_objects = "",
-                       const std::string& settings = "") {
+                       const std::string& settings = "", const std::string& ball_shader = "") {
   std::string standard = example_shader("SurfaceStandard.shader");
+  std::string ball = ball_shader.empty() ? standard : ball_shader;
   return R"({"width": 64, "height": 64, "ambient": [0.05, 0.05, 0.05], )" + settings +
          R"("camera": {"type": "orthographic", "size": 2, "position": [0, 4, 0], "look_at": [0, 0, 0],
                        "clear_color": [0, 0, 0]},
@@ -32,7 +35,7 @@ std::string ball_scene(const std::string& lights, const std::string& extra_objec
              {"name": "floor", "mesh": "plane", "scale": 0.5, "material": {"shader": ")" + standard +
          R"(", "properties": {"_Color": [0.8, 0.8, 0.8], "_Glossiness": 0}}},
              {"name": "ball", "mesh": "sphere", "position": [0, 1, 0], "scale": 0.6, "material": {"shader": ")" +
-         standard + R"(", "properties": {"_Color": [0.8, 0.2, 0.2], "_Glossiness": 0}}})" + extra_objects + "]}";
+         ball + R"(", "properties": {"_Color": [0.8, 0.2, 0.2], "_Glossiness": 0}}})" + extra_objects + "]}";
 }
 
 std::string sun(const std::string& shadows) {
@@ -57,6 +60,42 @@ TEST_F(ShadowsTest, ADirectionalLightsShadowDarkensTheFloorBehindTheBall) {
   EXPECT_LT(grey(shadowed, 32, 23) + 60, grey(shadowed, 32, 41));
   EXPECT_LT(std::abs(grey(shadowed, 32, 41) - grey(plain, 32, 41)), 3);  // lit floor unchanged: no acne
   EXPECT_LT(std::abs(grey(shadowed, 32, 32) - grey(plain, 32, 32)), 3);  // the ball's lit top unchanged
+}
+
+// A ball shader with a ForwardBase pass and no ShadowCaster: whatever shadow
+// it casts comes from its Fallback.
+std::string ball_shader_falling_back_to(const std::string& fallback) {
+  std::filesystem::path path = test_support::test_dir() / ("ball_fallback_" + std::to_string(fallback.size()) + ".shader");
+  std::ofstream(path) << R"(Shader "Test/BallWithFallback" {
+    Properties { _Color ("Color", Color) = (1, 1, 1, 1) _Glossiness ("Smoothness", Float) = 0 }
+    SubShader {
+        Pass {
+            Tags { "LightMode" = "ForwardBase" }
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "UnityCG.cginc"
+            float4 vert(float4 v : POSITION) : SV_POSITION { return UnityObjectToClipPos(v); }
+            fixed4 _Color;
+            fixed4 frag() : SV_Target { return _Color; }
+            ENDCG
+        }
+    }
+    Fallback )" << fallback << "\n}\n";
+  return path.string();
+}
+
+TEST_F(ShadowsTest, AShaderCastsTheShadowOfItsFallbackDiffuse) {
+  const std::string lights = sun(R"(, "shadows": "hard")");
+  RenderedFrame diffuse = render("fallback_diffuse", ball_scene(lights, "", "", ball_shader_falling_back_to("\"Diffuse\"")));
+  RenderedFrame off = render("fallback_off", ball_scene(lights, "", "", ball_shader_falling_back_to("Off")));
+  ASSERT_FALSE(diffuse.ldr.empty());
+  ASSERT_FALSE(off.ldr.empty());
+  EXPECT_LT(grey(diffuse, 32, 23) + 60, grey(diffuse, 32, 41));  // the floor behind the ball is in its shadow
+  EXPECT_LT(std::abs(grey(off, 32, 23) - grey(off, 32, 41)), 8);  // no caster, no shadow
+  auto is_ball_caster = [](const DrawRecord& d) { return d.light_mode == "ShadowCaster" && d.object_index == 1 && d.drawn; };
+  EXPECT_EQ(count_if(diffuse, is_ball_caster), 1u);
+  EXPECT_EQ(count_if(off, is_ball_caster), 0u);
 }
 
 TEST_F(ShadowsTest, ZeroStrengthDrawsTheSameImageAsNoShadows) {

@@ -12,17 +12,31 @@ using ::testing::HasSubstr;
 
 const char* kFallbackOnly = "Shader \"Legacy/Alias\" {\n  Fallback \"Diffuse\"\n}\n";
 
-TEST_F(FacetcTest, AFallbackOnlyShaderCompilesToAPackageWithoutPasses) {
+TEST_F(FacetcTest, AFallbackOnlyShaderCompilesToItsFallbacksPasses) {
   write_all(dir_ / "alias.shader", kFallbackOnly);
   FacetcRun run = facetc({"alias.shader", "-o", "alias.facetpkg"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("alias.shader:1:1: note: shader 'Legacy/Alias' has no SubShader; Unity draws it "
-                                 "with its Fallback 'Diffuse'"));
+  EXPECT_THAT(run.err, HasSubstr("alias.shader:2:3: note: shader 'Legacy/Alias' has no SubShader; it is drawn with "
+                                 "its Fallback 'Diffuse' ("));
   FacetcRun dump = facetc({"--dump", "alias.facetpkg"});
   ASSERT_EQ(dump.exit_code, 0) << dump.err;
   auto json = nlohmann::json::parse(dump.out);
-  EXPECT_TRUE(json["passes"].empty());
+  std::vector<std::string> passes;
+  for (const auto& p : json["passes"]) passes.push_back(p["name"]);
+  EXPECT_EQ(passes, (std::vector<std::string>{"FORWARD", "FORWARD_DELTA", "ShadowCaster"}));  // Legacy Diffuse's
   EXPECT_EQ(json["shader"]["fallback"], "Diffuse");
+}
+
+TEST_F(FacetcTest, AFallbackOnlyShaderWhoseFallbackIsNotFoundCompilesToNoPasses) {
+  write_all(dir_ / "alias.shader", "Shader \"Legacy/Alias\" {\n  Fallback \"Company/Missing\"\n}\n");
+  FacetcRun run = facetc({"alias.shader", "-o", "alias.facetpkg"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("alias.shader:2:3: warning: Fallback 'Company/Missing' is not used: no shader named "
+                                 "'Company/Missing' in the shader search path; the shader has nothing to draw"));
+  EXPECT_THAT(run.err, HasSubstr("note: shader 'Legacy/Alias' has no SubShader; Unity draws it with its Fallback"));
+  FacetcRun dump = facetc({"--dump", "alias.facetpkg"});
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  EXPECT_TRUE(nlohmann::json::parse(dump.out)["passes"].empty());
 }
 
 TEST_F(FacetcTest, AShaderWithNeitherSubShaderNorFallbackFails) {

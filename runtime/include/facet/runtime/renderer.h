@@ -91,6 +91,7 @@ struct RenderStats {
   uint64_t shadow_draws = 0;        // ShadowCaster draws into them
   uint64_t depth_texture_draws = 0; // ShadowCaster draws into the camera depth texture (objects sample it)
   uint64_t triangles = 0;
+  uint64_t grabs = 0;              // screen copies into GrabPass textures, in the last frame
   uint64_t pipelines = 0;          // graphics pipelines created
   uint64_t variants_compiled = 0;  // (pass, variant) pairs compiled
   uint64_t shaders_loaded = 0;     // .shader files and packages loaded by this render

@@ -1,0 +1,30 @@
+// facet's own "Legacy Shaders/Diffuse" (also found as "Diffuse", the most
+// common Fallback): Lambert lighting of the texture times _Color.
+Shader "Legacy Shaders/Diffuse" {
+    Properties {
+        _Color ("Main Color", Color) = (1, 1, 1, 1)
+        _MainTex ("Base (RGB)", 2D) = "white" {}
+    }
+    SubShader {
+        Tags { "RenderType" = "Opaque" }
+        LOD 200
+
+        CGPROGRAM
+        #pragma surface surf Lambert
+
+        sampler2D _MainTex;
+        fixed4 _Color;
+
+        struct Input {
+            float2 uv_MainTex;
+        };
+
+        void surf(Input IN, inout SurfaceOutput o) {
+            fixed4 c = tex2D(_MainTex, IN.uv_MainTex) * _Color;
+            o.Albedo = c.rgb;
+            o.Alpha = c.a;
+        }
+        ENDCG
+    }
+    Fallback "Legacy Shaders/VertexLit"
+}
