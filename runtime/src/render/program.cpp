@@ -175,6 +175,32 @@ std::vector<VkVertexInputAttributeDescription> vertex_attributes(const GpuProgra
   return attributes;
 }
 
+namespace {
+
+bool has_stage(const GpuProgram& program, VkShaderStageFlagBits stage) {
+  return std::find(program.stages.begin(), program.stages.end(), stage) != program.stages.end();
+}
+
+// What the pass needs of the device beyond the core: a clear error rather
+// than a pipeline the driver may crash on.
+Result<void, std::string> check_features(const Context& context, const GpuProgram& program, const PipelineState& state) {
+  const VkPhysicalDeviceFeatures& on = context.enabled_features();
+  auto lacks = [&](const char* what, const char* feature) {
+    return unexpected(fmt::format("{} needs the Vulkan feature {}, which {} does not have", what, feature,
+                                  context.device_info().name));
+  };
+  if (has_stage(program, VK_SHADER_STAGE_GEOMETRY_BIT) && !on.geometryShader) {
+    return lacks("the pass's geometry stage", "geometryShader");
+  }
+  if (has_stage(program, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT) && !on.tessellationShader) {
+    return lacks("the pass's hull and domain stages", "tessellationShader");
+  }
+  if (state.depth_clamp && !on.depthClamp) return lacks("'ZClip False'", "depthClamp");
+  return {};
+}
+
+}  // namespace
+
 Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram& program, const PipelineState& state,
                                              bool mirrored, VkRenderPass render_pass, VkPipelineCache cache,
                                              bool* created) {
@@ -189,6 +215,7 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
     if (created) *created = false;
     return it->second;
   }
+  FACET_TRY(check_features(context, program, state));
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   for (size_t i = 0; i < program.modules.size(); ++i) {
     VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -205,7 +232,11 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
   vertex.vertexAttributeDescriptionCount = uint32_t(attributes.size());
   vertex.pVertexAttributeDescriptions = attributes.data();
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  const bool tessellated = has_stage(program, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
+  // The hull stage takes the mesh's triangles as 3-point patches.
+  assembly.topology = tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineTessellationStateCreateInfo tessellation{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+  tessellation.patchControlPoints = 3;
   VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
@@ -215,7 +246,7 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
   // Unity's front faces are clockwise on screen; the projection flips y so
   // that row 0 is the top, which keeps that winding in framebuffer space.
   raster.frontFace = mirrored ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
-  raster.depthClampEnable = VK_FALSE;  // ZClip False would need the depthClamp feature
+  raster.depthClampEnable = state.depth_clamp;  // ZClip False (check_features: the device has depthClamp)
   raster.depthBiasEnable = state.offset_factor != 0 || state.offset_units != 0;
   raster.depthBiasSlopeFactor = state.offset_factor;
   raster.depthBiasConstantFactor = state.offset_units;
@@ -251,6 +282,7 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
   info.pStages = stages.data();
   info.pVertexInputState = &vertex;
   info.pInputAssemblyState = &assembly;
+  info.pTessellationState = tessellated ? &tessellation : nullptr;
   info.pViewportState = &viewport;
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;

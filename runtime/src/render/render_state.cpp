@@ -226,6 +226,7 @@ std::string describe(const PipelineState& s) {
   if (s.color_mask != 15) text += fmt::format(" ColorMask {}", unsigned(s.color_mask));
   if (s.offset_factor != 0 || s.offset_units != 0) text += fmt::format(" Offset {}, {}", s.offset_factor, s.offset_units);
   if (s.stencil) text += " Stencil";
+  if (s.depth_clamp) text += " ZClip False";
   return text;
 }
 

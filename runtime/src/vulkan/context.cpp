@@ -93,6 +93,13 @@ struct ContextBuilder {
       float16.pNext = const_cast<void*>(info.pNext);
       info.pNext = &float16;
     }
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(context.physical_, &supported);
+    context.features_ = {};
+    context.features_.geometryShader = supported.geometryShader;
+    context.features_.tessellationShader = supported.tessellationShader;
+    context.features_.depthClamp = supported.depthClamp;
+    info.pEnabledFeatures = &context.features_;
     if (VkResult result = vkCreateDevice(context.physical_, &info, nullptr, &context.device_); result != VK_SUCCESS) {
       return vk_failure(VkErrorCode::device_failed, fmt::format("cannot create a device on {}", context.info_.name),
                         result);

@@ -95,6 +95,11 @@ class Context {
   // float arithmetic in shaders (kernels compiled with
   // backend::BackendOptions::hlsl_16bit_types). Off: such kernels must not run.
   bool shader_float16() const { return shader_float16_; }
+  // The optional features ShaderLab can ask for, enabled where the device
+  // has them: geometryShader (`#pragma geometry`), tessellationShader
+  // (`#pragma hull`/`domain`, surface `tessellate:`), depthClamp (`ZClip
+  // False`). The rest of the struct is off.
+  const VkPhysicalDeviceFeatures& enabled_features() const { return features_; }
 
   // Every message of severity >= warning since creation (or the last clear).
   const std::vector<ValidationMessage>& messages() const { return messages_; }
@@ -122,6 +127,7 @@ class Context {
   bool validation_ = false;
   bool pipeline_statistics_ = false;
   bool shader_float16_ = false;
+  VkPhysicalDeviceFeatures features_{};
   std::vector<ValidationMessage> messages_;
 };
 
