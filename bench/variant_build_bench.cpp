@@ -11,7 +11,7 @@
 //                       [--parallel N]      (the parallel rows use N threads / processes; default 2)
 //   facet_variant_bench --facetc build/compiler/facetc --report-vs-build [--parallel N]
 //                       (only: facetc --report against the cold build it describes, on the
-//                        generated uber shader and examples/uber/StandardUber.shader;
+//                        generated uber shader and stdlib/Shaders/Standard.shader;
 //                        [--source-dir DIR] names the source tree holding examples/;
 //                        --example-only skips the generated shader, for a slot too short for both)
 #include <fmt/format.h>
@@ -42,7 +42,7 @@ struct Options {
   unsigned naive_every = 1;
   unsigned parallel = 2;  // the parallel runs: facetc -jN and N glslc processes at a time
   bool report_vs_build = false;
-  bool example_only = false;  // --report-vs-build on examples/uber/StandardUber.shader alone
+  bool example_only = false;  // --report-vs-build on stdlib/Shaders/Standard.shader alone
   std::string source_dir = FACET_SOURCE_DIR;  // where examples/ is (another machine: --source-dir)
 };
 
@@ -194,7 +194,7 @@ bool report_against_build(const Options& o, const fs::path& shader, int rounds) 
 int report_vs_build(const Options& o, const fs::path& uber) {
   std::cout << fmt::format("facetc --report against the cold build it describes (-j{}, no cache; best of 2, the example once)\n",
                            o.parallel);
-  fs::path example = fs::path(o.source_dir) / "examples" / "uber" / "StandardUber.shader";
+  fs::path example = fs::path(o.source_dir) / "stdlib" / "Shaders" / "Standard.shader";
   bool ok = (o.example_only || report_against_build(o, uber, 2)) && report_against_build(o, example, 1);
   if (!ok) std::cerr << "facetc failed\n";
   return ok ? 0 : 1;

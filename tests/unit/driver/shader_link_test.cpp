@@ -285,18 +285,32 @@ TEST_F(ShaderLinkTest, LegacyNamesFindTheLegacyShaders) {
   EXPECT_FALSE(find_shader(index, "Legacy Shaders/Nothing"));
 }
 
-// Every shader of the stdlib's Shaders/ folder builds its default variants
+// Every shader of the stdlib's Shaders/ folder builds the default variant of
+// each pass (Standard's whole space is tens of thousands of programs)
 // without an error or a warning.
 TEST_F(ShaderLinkTest, EveryStdlibShaderCompilesCleanly) {
   size_t count = 0;
+  CompileOptions options;
+  options.keywords = std::vector<std::string>{};
   for (const auto& entry : fs::recursive_directory_iterator(default_stdlib_dir() + "/Shaders")) {
     if (entry.path().extension() != ".shader") continue;
-    BuildResult built = compiler_.build_file(entry.path().string(), {});
+    BuildResult built = compiler_.build_file(entry.path().string(), options);
     EXPECT_TRUE(built.ok()) << entry.path() << "\n" << built.messages();
     EXPECT_EQ(built.diagnostics.warning_count(), 0u) << entry.path() << "\n" << built.messages();
     ++count;
   }
-  EXPECT_GE(count, 15u);
+  EXPECT_GE(count, 16u);
+}
+
+TEST_F(ShaderLinkTest, FallbackStandardGivesTheStandardShadowCaster) {
+  auto shader = load(with_fallback("Fallback \"Standard\""));
+  ASSERT_TRUE(shader) << messages();
+  auto selected = passes(*shader);
+  const SelectedPass* cast = caster(selected);
+  ASSERT_NE(cast, nullptr) << messages();
+  EXPECT_EQ(cast->ir.origin, "Fallback \"Standard\"");
+  EXPECT_THAT(home_path(*shader, *cast), HasSubstr("Shaders/Standard.shader"));
+  EXPECT_EQ(cast->ir.program->entry_points[size_t(Stage::vertex)], "vertShadowCaster");
 }
 
 }  // namespace

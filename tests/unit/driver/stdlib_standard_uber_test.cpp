@@ -1,4 +1,4 @@
-// examples/uber/StandardUber.shader, our Standard-style uber shader over
+// stdlib/Shaders/Standard.shader, facet's Standard: an uber shader over
 // the UnityStandardCore* includes, compiles to valid SPIR-V for the variants
 // of representative materials and for a seeded random sample of its full
 // keyword space (the whole space is tens of thousands of programs: a
@@ -13,7 +13,7 @@
 namespace facet {
 namespace {
 
-std::string uber_path() { return std::string(FACET_SOURCE_DIR) + "/examples/uber/StandardUber.shader"; }
+std::string uber_path() { return std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Standard.shader"; }
 
 struct Loaded {
   Compiler compiler;

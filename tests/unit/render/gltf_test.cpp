@@ -137,7 +137,7 @@ TEST(GltfLoad, BinFileAndGlbLoadTheSameMesh) {
 TEST(GltfScene, MaterialsMapOntoTheStandardShadersProperties) {
   std::string mesh = write_gltf_sample(test_dir(), "mapped");
   std::string json =
-      small_scene(gltf_object(mesh, std::string(FACET_SOURCE_DIR) + "/examples/uber/StandardUber.shader"));
+      small_scene(gltf_object(mesh, std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Standard.shader"));
   auto scene = parse_scene(json, write_scene("mapped", json));
   ASSERT_TRUE(scene) << scene.error().message;
   ASSERT_EQ(scene->objects.size(), 1u);
@@ -274,7 +274,7 @@ TEST_F(GltfRender, StripsAndFansDrawTheSameQuad) {
 TEST_F(GltfRender, TheEmissionTextureShowsThroughTheStandardShader) {
   std::string mesh = write_gltf_sample(test_dir(), "standard");
   std::string json =
-      small_scene(gltf_object(mesh, std::string(FACET_SOURCE_DIR) + "/examples/uber/StandardUber.shader"));
+      small_scene(gltf_object(mesh, std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Standard.shader"));
   json.insert(1, R"("ambient": [0, 0, 0], )");
   RenderedFrame frame = render("standard", json);
   expect_quadrants(frame);

@@ -188,11 +188,11 @@ TEST_F(FacetcTest, ReportOfASpaceTooLargeToEnumerateCountsItExactly) {
 // Two materials of the uber shader: a plain one and a normal-mapped,
 // emissive one. Its ShadowCaster and ForwardAdd passes keep the test small.
 constexpr const char* kUberMaterials = R"({"materials": [
-  {"name": "Plain", "shader": "Facet/StandardUber"},
-  {"name": "Glowing", "shader": "Facet/StandardUber", "keywords": ["_NORMALMAP", "_EMISSION"]}
+  {"name": "Plain", "shader": "Standard"},
+  {"name": "Glowing", "shader": "Standard", "keywords": ["_NORMALMAP", "_EMISSION"]}
 ]})";
 
-std::string uber() { return std::string(FACET_SOURCE_DIR) + "/examples/uber/StandardUber.shader"; }
+std::string uber() { return std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Standard.shader"; }
 
 uint64_t programs_of(const nlohmann::json& shader) {
   uint64_t n = 0;

@@ -1,9 +1,10 @@
-// facet's own Standard-style uber shader: the Properties of Unity's Standard
-// (metallic setup) and its four passes, each a list of keyword switches over
-// the UnityStandardCore* includes. Its full keyword space is tens of
-// thousands of programs; builds normally strip it by the materials in use
+// facet's own "Standard" (the name real shaders use as a Fallback): an uber
+// shader with the Properties of Unity's Standard (metallic setup) and its
+// forward passes, each a list of keyword switches over the
+// UnityStandardCore* includes. Its full keyword space is tens of thousands
+// of programs; builds normally strip it by the materials in use
 // (CompileOptions::materials, facetc --materials).
-Shader "Facet/StandardUber" {
+Shader "Standard" {
     Properties {
         _Color ("Color", Color) = (1, 1, 1, 1)
         _MainTex ("Albedo", 2D) = "white" {}
