@@ -62,10 +62,12 @@ TEST_F(ShadowsTest, ADirectionalLightsShadowDarkensTheFloorBehindTheBall) {
   EXPECT_LT(std::abs(grey(shadowed, 32, 32) - grey(plain, 32, 32)), 3);  // the ball's lit top unchanged
 }
 
-// A ball shader with a ForwardBase pass and no ShadowCaster: whatever shadow
-// it casts comes from its Fallback.
-std::string ball_shader_falling_back_to(const std::string& fallback) {
-  std::filesystem::path path = test_support::test_dir() / ("ball_fallback_" + std::to_string(fallback.size()) + ".shader");
+// A ball shader with a ForwardBase pass and no ShadowCaster of its own:
+// whatever shadow it casts comes from its Fallback, or from `extra_pass`
+// (a UsePass) written after the ForwardBase pass.
+std::string ball_shader_falling_back_to(const std::string& fallback, const std::string& extra_pass = "") {
+  std::filesystem::path path = test_support::test_dir() /
+                               ("ball_fallback_" + std::to_string(fallback.size() + 100 * extra_pass.size()) + ".shader");
   std::ofstream(path) << R"(Shader "Test/BallWithFallback" {
     Properties { _Color ("Color", Color) = (1, 1, 1, 1) _Glossiness ("Smoothness", Float) = 0 }
     SubShader {
@@ -80,6 +82,7 @@ std::string ball_shader_falling_back_to(const std::string& fallback) {
             fixed4 frag() : SV_Target { return _Color; }
             ENDCG
         }
+        )" << extra_pass << R"(
     }
     Fallback )" << fallback << "\n}\n";
   return path.string();
@@ -96,6 +99,14 @@ TEST_F(ShadowsTest, AShaderCastsTheShadowOfItsFallbackDiffuse) {
   auto is_ball_caster = [](const DrawRecord& d) { return d.light_mode == "ShadowCaster" && d.object_index == 1 && d.drawn; };
   EXPECT_EQ(count_if(diffuse, is_ball_caster), 1u);
   EXPECT_EQ(count_if(off, is_ball_caster), 0u);
+}
+
+TEST_F(ShadowsTest, AUsePassOfLegacyVertexLitsCasterCastsTheShadow) {
+  const std::string lights = sun(R"(, "shadows": "hard")");
+  std::string shader = ball_shader_falling_back_to("Off", "UsePass \"Legacy Shaders/VertexLit/SHADOWCASTER\"");
+  RenderedFrame frame = render("usepass_caster", ball_scene(lights, "", "", shader));
+  ASSERT_FALSE(frame.ldr.empty());
+  EXPECT_LT(grey(frame, 32, 23) + 60, grey(frame, 32, 41));
 }
 
 TEST_F(ShadowsTest, ZeroStrengthDrawsTheSameImageAsNoShadows) {
