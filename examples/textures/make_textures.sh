@@ -26,3 +26,13 @@ oiiotool --pattern constant:color=0 64x64 1 --fill:color=1 23x23+6+6 --fill:colo
 # A directional light's cookie: a soft checker of light and shade (tiles every
 # cookie_size world units).
 oiiotool --pattern checker:width=16:height=16:color1=1:color2=0.2 64x64 1 --blur 7x7 -d uint8 -o cookie_checker.png
+
+# An HDR studio environment (equirectangular, linear half floats, row 0
+# looking up): a sky gradient over a warm ground, a small sun (radiance 60)
+# up and to the left behind a camera looking along +Z, and two soft boxes low
+# in front, so that smooth spheres show sharp highlights and rough ones a
+# blur of them.
+oiiotool --pattern constant:color=0 256x128 3 \
+  --fill:top=0.25,0.4,0.8:bottom=0.8,0.85,0.9 256x64+0+0 --fill:top=0.25,0.22,0.18:bottom=0.1,0.08,0.06 256x64+0+64 \
+  --fill:color=6,5.6,5 24x12+24+46 --fill:color=4,4.4,5 24x12+104+46 \
+  --blur 3x3 --fill:color=60,56,50 5x5+216+37 -d half -o studio.exr

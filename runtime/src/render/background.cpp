@@ -16,21 +16,26 @@ SceneProperty colour(const std::string& name, const std::string& key, const Vec3
 Result<void, RenderError> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
                                              GpuMesh* quad, const LightValues* none, SceneObject& source,
                                              std::vector<ObjectState>& objects, DrawListResult& list) {
-  const SceneSky& sky = *scene.sky;
-  source.name = "procedural sky";
+  source.name = scene.environment ? "environment" : "procedural sky";
   source.json_path = "camera.clear";
   source.mesh = "quad";
   if (!library.compiler() || library.compiler()->stdlib_dir.empty()) {
     return unexpected(RenderError{fmt::format(
-        "{}: camera.clear: the procedural sky is the stdlib's ProceduralSky.shader, which needs the development "
-        "layer (facet_shader_compiler); this renderer draws packages only",
-        scene.path)});
+        "{}: camera.clear: the sky is the stdlib's {}, which needs the development layer (facet_shader_compiler); "
+        "this renderer draws packages only",
+        scene.path, scene.environment ? "EnvironmentSky.shader" : "ProceduralSky.shader")});
   }
-  source.material.shader = library.compiler()->stdlib_dir + "/Shaders/ProceduralSky.shader";
   source.material.json_path = "camera.clear";
-  source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
-                                colour("_Ground", "ground", sky.ground),
-                                {"_Intensity", "ambient.sky.intensity", {sky.intensity}, std::nullopt}};
+  if (scene.environment) {
+    // Mip 0 of unity_SpecCube0: the environment cube is bound to every Cube slot nothing else fills.
+    source.material.shader = library.compiler()->stdlib_dir + "/Shaders/EnvironmentSky.shader";
+  } else {
+    const SceneSky& sky = *scene.sky;
+    source.material.shader = library.compiler()->stdlib_dir + "/Shaders/ProceduralSky.shader";
+    source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
+                                  colour("_Ground", "ground", sky.ground),
+                                  {"_Intensity", "ambient.sky.intensity", {sky.intensity}, std::nullopt}};
+  }
   Result<ShaderAsset*, std::string> shader = library.load(source.material.shader);
   if (!shader) {
     return unexpected(RenderError{fmt::format("{}: camera.clear: the sky shader {} does not compile:\n{}", scene.path,
@@ -50,7 +55,8 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
   objects.push_back(std::move(s));
   DrawListResult sky_list;
   DrawRecord record = pass_record(objects.back(), 0);
-  record.why = "camera.clear is \"sky\": the procedural sky of ambient.sky behind everything";
+  record.why = scene.environment ? "camera.clear is \"sky\": the environment behind everything"
+                                  : "camera.clear is \"sky\": the procedural sky of ambient.sky behind everything";
   FACET_TRY(add_draw(context, scene, library, objects.back(), 0, none, {}, std::move(record), sky_list));
   list.draws.insert(list.draws.begin(), std::move(sky_list.draws.front()));
   list.compiled.insert(list.compiled.end(), sky_list.compiled.begin(), sky_list.compiled.end());

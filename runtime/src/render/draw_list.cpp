@@ -171,7 +171,6 @@ struct Builder {
   const LightSetup& lights;
   ShaderLibrary& library;
   DrawListResult out;
-  const UnitySh ambient = ambient_sh(scene);  // once a frame: a sky's is a projection
 
   Result<void, RenderError> add(ObjectState& object, size_t pass_index, const LightValues* light,
                                 const std::vector<std::string>& global, DrawRecord record) {
@@ -231,7 +230,7 @@ struct Builder {
     }
     if (!scheduled.vertex.empty() || !scheduled.sh.empty()) {
       light = &out.draw_lights.emplace_back(
-          forward_base_values(*light, scene, ambient, scheduled.vertex, scheduled.sh, object.center));
+          forward_base_values(*light, scene, lights.ambient, scheduled.vertex, scheduled.sh, object.center));
     }
     return add(object, p, light, global, std::move(record));
   }
@@ -321,9 +320,10 @@ struct Builder {
 
 }  // namespace
 
-LightSetup setup_lights(const Scene& scene, const glm::mat4& view) {
+LightSetup setup_lights(const Scene& scene, const glm::mat4& view, const UnitySh& ambient) {
   LightSetup setup;
   setup.view = view;
+  setup.ambient = ambient;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     setup.lights.push_back(light_values(scene.lights[i]));
     // ForwardBase has no cookie variant (multi_compile_fwdbase declares only

@@ -71,9 +71,10 @@ struct LightSetup {
   int main = -1;                    // the brightest directional light, or -1
   LightValues none = no_light();
   glm::mat4 view{1};                // the camera's: vertex-lit lights are in view space
+  UnitySh ambient;                  // the scene's SH (environment_lighting)
 };
 
-LightSetup setup_lights(const Scene& scene, const glm::mat4& view);
+LightSetup setup_lights(const Scene& scene, const glm::mat4& view, const UnitySh& ambient);
 
 // Unity's forward light scheduling for one object, among the lights that
 // reach it other than the main light (directional first, then by

@@ -28,7 +28,7 @@ void set_sh(UniformValues& u, const UnitySh& sh) {
 }
 
 // unity_Ambient* are a sky's three colours, or the flat ambient thrice.
-void set_ambient(UniformValues& u, const Scene& scene) {
+void set_ambient(UniformValues& u, const Scene& scene, const UnitySh& sh) {
   glm::vec3 ambient = linear_color(scene.ambient);
   glm::vec3 sky = ambient, equator = ambient, ground = ambient;
   if (scene.sky) {
@@ -40,7 +40,7 @@ void set_ambient(UniformValues& u, const Scene& scene) {
   set(u, "unity_AmbientEquator", glm::vec4(equator, 1));
   set(u, "unity_AmbientGround", glm::vec4(ground, 1));
   set(u, "glstate_lightmodel_ambient", glm::vec4(ambient, 1));
-  set_sh(u, ambient_sh(scene));
+  set_sh(u, sh);
 }
 
 // Directional cookies repeat every `size` world units over the light's XY
@@ -131,7 +131,8 @@ UniformValues per_frame_uniforms(const Scene& scene, const CameraMatrices& cam, 
   return u;
 }
 
-UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height) {
+UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int width, int height,
+                             const UnitySh& ambient) {
   UniformValues u = per_frame_uniforms(scene, cam, width, height);
   const SceneFog& fog = scene.fog;
   glm::vec3 fog_color = linear_color({fog.color[0], fog.color[1], fog.color[2]});
@@ -139,7 +140,7 @@ UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int 
   float range = fog.end - fog.start;
   set(u, "unity_FogParams", {fog.density / std::sqrt(std::log(2.0f)), fog.density / std::log(2.0f), -1 / range,
                              fog.end / range});
-  set_ambient(u, scene);
+  set_ambient(u, scene, ambient);
   set(u, "unity_SpecCube0_HDR", {1, 1, 0, 0});
   set(u, "unity_SpecCube0_BoxMax", {0, 0, 0, 0});
   set(u, "unity_SpecCube0_BoxMin", {0, 0, 0, 0});

@@ -33,7 +33,9 @@ CameraMatrices camera_matrices_at(const glm::mat4& camera_to_world, const SceneC
 
 glm::vec3 linear_color(const Vec3& srgb);
 
-UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& camera, int width, int height);
+// `ambient` is the scene's SH (environment_lighting).
+UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& camera, int width, int height,
+                             const UnitySh& ambient);
 // The part of them that moves with the camera and time (matrices, projection
 // and screen parameters, _Time): what a renderer recomputes every frame.
 UniformValues per_frame_uniforms(const Scene& scene, const CameraMatrices& camera, int width, int height);

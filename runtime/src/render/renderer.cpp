@@ -19,6 +19,7 @@
 #include "render/background.h"
 #include "render/capture.h"
 #include "render/draw_list.h"
+#include "render/environment_lighting.h"
 #include "render/grab.h"
 #include "render/post.h"
 #include "render/resources.h"
@@ -651,18 +652,19 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   resources.keep_pixels(options.capture != nullptr);
   Loader loader{context, scene, library, resources, {}};
   CameraMatrices camera = camera_matrices(scene.camera, frame.width, frame.height);
-  UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height);
-  glm::vec3 ambient = linear_color(scene.ambient);
-  if (!(scene.sky ? resources.sky_environment(*scene.sky) : resources.environment({ambient.r, ambient.g, ambient.b}))) {
-    return unexpected(error("cannot create the environment cube"));
+  Result<EnvironmentLighting, std::string> environment = environment_lighting(scene);
+  if (!environment) return unexpected(error(environment.error()));
+  if (Result<const Image*, std::string> cube = resources.environment_cube(environment->cube); !cube) {
+    return unexpected(error("cannot create the environment cube: " + cube.error()));
   }
+  UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height, environment->ambient);
   std::vector<ObjectState> objects;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     Result<ObjectState, RenderError> o = loader.object(i, camera);
     if (!o) return unexpected(o.error());
     objects.push_back(std::move(*o));
   }
-  LightSetup lights = setup_lights(scene, camera.view);
+  LightSetup lights = setup_lights(scene, camera.view, environment->ambient);
   std::vector<ShadowView> shadow_views;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     if (std::optional<ShadowView> v = shadow_view(scene, i, objects, camera.position)) {

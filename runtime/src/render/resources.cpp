@@ -7,7 +7,6 @@
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/material.h"
-#include "facet/runtime/sky_sh.h"
 #include "facet/runtime/vulkan_context.h"
 #include "image_io/image_io.h"
 
@@ -233,15 +232,6 @@ const std::vector<std::vector<std::byte>>* Resources::pixels_of(const Image* ima
   return nullptr;
 }
 
-Result<const Image*, std::string> Resources::environment(const Vec3& c) {
-  if (!environment_) {
-    Result<LoadedTexture, std::string> made = solid({c[0], c[1], c[2], 1}, VK_IMAGE_VIEW_TYPE_CUBE, 6, false);
-    if (!made) return unexpected(made.error());
-    environment_ = std::make_unique<LoadedTexture>(std::move(*made));
-  }
-  return &environment_->image;
-}
-
 Result<void, std::string> Resources::load_cookies(const Scene& scene) {
   for (const SceneLight& light : scene.lights) {
     if (!light.cookie) continue;
@@ -251,12 +241,10 @@ Result<void, std::string> Resources::load_cookies(const Scene& scene) {
   return {};
 }
 
-Result<const Image*, std::string> Resources::sky_environment(const SceneSky& sky) {
-  constexpr uint32_t kFace = 16;
-  std::vector<std::vector<float>> levels = sky_cube_mips(linear_sky(sky), kFace);
+Result<const Image*, std::string> Resources::environment_cube(const CubeMips& cube) {
   std::vector<std::vector<std::byte>> mips;
-  for (const std::vector<float>& level : levels) mips.push_back(encode(level, VK_FORMAT_R16G16B16A16_SFLOAT));
-  VkResultOf<Image> image = create_image(context_, {.width = kFace, .height = kFace, .layers = 6,
+  for (const std::vector<float>& level : cube.mips) mips.push_back(encode(level, VK_FORMAT_R16G16B16A16_SFLOAT));
+  VkResultOf<Image> image = create_image(context_, {.width = cube.size, .height = cube.size, .layers = 6,
                                                     .mips = uint32_t(mips.size()), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                                     .view = VK_IMAGE_VIEW_TYPE_CUBE});
@@ -264,7 +252,7 @@ Result<const Image*, std::string> Resources::sky_environment(const SceneSky& sky
   std::vector<std::span<const std::byte>> spans(mips.begin(), mips.end());
   VkResultOf<void> up = upload_image(context_, *image, spans);
   if (!up) return unexpected(describe(up.error()));
-  environment_ = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), kFace, kFace});
+  environment_ = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), cube.size, cube.size});
   if (keep_pixels_) environment_->mips = std::move(mips);
   return &environment_->image;
 }

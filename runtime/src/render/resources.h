@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "facet/result.h"
+#include "facet/runtime/environment.h"
 #include "facet/runtime/image.h"
 #include "facet/runtime/scene.h"
 
@@ -36,11 +37,9 @@ class Resources {
   // An image for a resource of dimension `dim` ("2D", "Cube", "3D") that
   // nothing else binds: white, or for "Cube" the environment.
   Result<const Image*, std::string> fallback(std::string_view dim, bool arrayed);
-  // The environment cube (1 texel per face) of this linear colour.
-  Result<const Image*, std::string> environment(const Vec3& linear_color);
-  // The environment cube of a sky: 16 texels per face, mips down to 1 by box
-  // filtering (RGBA16F), replacing the flat one.
-  Result<const Image*, std::string> sky_environment(const SceneSky& sky);
+  // The environment cube of these mips (a reflection probe's chain,
+  // environment_lighting), RGBA16F, replacing the flat one.
+  Result<const Image*, std::string> environment_cube(const CubeMips& cube);
   // Loads every light's cookie before recording; errors name
   // "<scene>: lights[i].cookie".
   Result<void, std::string> load_cookies(const Scene& scene);

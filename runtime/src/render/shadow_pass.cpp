@@ -161,7 +161,8 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
     map->casters = std::move(*casters);
     Scene seen_from_light = scene;
     seen_from_light.camera = view.lens;
-    map->frame = frame_uniforms(seen_from_light, view.camera, int(size), int(size));
+    // Casters read depth only: the flat ambient's SH stands in for the environment's.
+    map->frame = frame_uniforms(seen_from_light, view.camera, int(size), int(size), ambient_sh(scene));
     FACET_TRY(make_target(context, out.render_pass, *map));
     FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
     out.maps.push_back(std::move(map));

@@ -154,38 +154,4 @@ glm::vec3 cube_direction(int face, float s, float t) {
   }
 }
 
-std::vector<std::vector<float>> sky_cube_mips(const SkyRadiance& sky, uint32_t size) {
-  std::vector<std::vector<float>> mips;
-  std::vector<float> level(size_t(size) * size * 6 * 4);
-  for (int face = 0; face < 6; ++face) {
-    for (uint32_t y = 0; y < size; ++y) {
-      for (uint32_t x = 0; x < size; ++x) {
-        glm::vec3 c = sky_radiance(sky, cube_direction(face, (x + 0.5f) / size, (y + 0.5f) / size));
-        float* texel = &level[((size_t(face) * size + y) * size + x) * 4];
-        texel[0] = c.r, texel[1] = c.g, texel[2] = c.b, texel[3] = 1;
-      }
-    }
-  }
-  mips.push_back(level);
-  for (uint32_t s = size; s > 1; s /= 2) {
-    uint32_t h = s / 2;
-    std::vector<float> next(size_t(h) * h * 6 * 4);
-    for (int face = 0; face < 6; ++face) {
-      for (uint32_t y = 0; y < h; ++y) {
-        for (uint32_t x = 0; x < h; ++x) {
-          for (int c = 0; c < 4; ++c) {
-            float sum = 0;
-            for (uint32_t k = 0; k < 4; ++k) {
-              sum += mips.back()[((size_t(face) * s + 2 * y + k / 2) * s + 2 * x + k % 2) * 4 + c];
-            }
-            next[((size_t(face) * h + y) * h + x) * 4 + c] = sum / 4;
-          }
-        }
-      }
-    }
-    mips.push_back(std::move(next));
-  }
-  return mips;
-}
-
 }  // namespace facet::runtime

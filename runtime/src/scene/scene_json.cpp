@@ -428,6 +428,34 @@ struct Reader {
     s.sky = sky;
   }
 
+  SceneEnvironment environment(const json& j) const {
+    const std::string path = "environment";
+    if (!j.is_object()) throw Bad{path, "expected {\"file\": \"image.hdr\"} or {\"color\": [r, g, b]}"};
+    check_keys(j, path, {"file", "color", "intensity", "rotation", "resolution"});
+    if (j.contains("file") == j.contains("color")) throw Bad{path, "expected exactly one of 'file' and 'color'"};
+    SceneEnvironment e;
+    if (j.contains("file")) e.file = resolve(text(member(j, "file"), join(path, "file")));
+    if (j.contains("color")) {
+      // Linear radiance, not an sRGB-authored colour: an HDR environment's unit.
+      const json& c = member(j, "color");
+      if (!c.is_array() || c.size() != 3) throw Bad{join(path, "color"), "expected 3 numbers (linear radiance)"};
+      for (size_t i = 0; i < 3; ++i) {
+        e.color[i] = number(c[i], index(join(path, "color"), i));
+        if (!(e.color[i] >= 0)) throw Bad{index(join(path, "color"), i), "expected a number >= 0"};
+      }
+    }
+    if (j.contains("intensity")) {
+      e.intensity = number(member(j, "intensity"), join(path, "intensity"));
+      if (!(e.intensity >= 0)) throw Bad{join(path, "intensity"), "expected a number >= 0"};
+    }
+    if (j.contains("rotation")) e.rotation = number(member(j, "rotation"), join(path, "rotation"));
+    if (j.contains("resolution")) {
+      e.resolution = integer(member(j, "resolution"), join(path, "resolution"), 8, 512);
+      if ((e.resolution & (e.resolution - 1)) != 0) throw Bad{join(path, "resolution"), "expected a power of two"};
+    }
+    return e;
+  }
+
   // A material plus the pass to blit with.
   ScenePostEffect post_effect(const json& j, const std::string& path) const {
     check_keys(j, path, {"shader", "properties", "keywords", "pass"});
@@ -442,7 +470,7 @@ struct Reader {
 
   Scene scene(const json& j) const {
     check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
-                       "pixel_light_count", "post", "shadow_resolution", "shadow_distance"});
+                       "pixel_light_count", "post", "shadow_resolution", "shadow_distance", "environment"});
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
@@ -459,8 +487,11 @@ struct Reader {
     if (!objects.is_array()) throw Bad{"objects", "expected a list of objects"};
     for (size_t i = 0; i < objects.size(); ++i) object(objects[i], index("objects", i), s.objects);
     if (j.contains("ambient")) ambient(member(j, "ambient"), s);
-    if (s.camera.clear_sky && !s.sky) {
-      throw Bad{"camera.clear", "\"sky\" needs a procedural sky: give ambient as {\"sky\": {...}}"};
+    s.ambient_given = j.contains("ambient");
+    if (j.contains("environment")) s.environment = environment(member(j, "environment"));
+    if (s.camera.clear_sky && !s.sky && !s.environment) {
+      throw Bad{"camera.clear",
+                "\"sky\" needs something to draw: an environment, or ambient as a procedural sky {\"sky\": {...}}"};
     }
     if (j.contains("fog")) s.fog = fog(member(j, "fog"), "fog");
     if (j.contains("tonemap")) {

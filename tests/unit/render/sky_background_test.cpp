@@ -77,7 +77,7 @@ TEST_F(SkyBackgroundTest, TheSkyIsOneDrawBeforeTheScene) {
 TEST(SkyBackgroundScene, BadClearSettingsNameTheirJsonPath) {
   auto no_sky = parse_scene(R"({"camera": {"clear": "sky"}, "objects": []})", "s.json");
   ASSERT_FALSE(no_sky);
-  EXPECT_NE(no_sky.error().message.find("camera.clear: \"sky\" needs a procedural sky"), std::string::npos)
+  EXPECT_NE(no_sky.error().message.find("camera.clear: \"sky\" needs something to draw: an environment, or ambient as a procedural sky"), std::string::npos)
       << no_sky.error().message;
   auto bad_word = parse_scene(R"({"camera": {"clear": "blue"}, "objects": []})", "s.json");
   ASSERT_FALSE(bad_word);

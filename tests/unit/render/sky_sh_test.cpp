@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "facet/runtime/environment.h"
 #include "facet/runtime/material.h"
 
 namespace facet::runtime {
@@ -139,7 +140,8 @@ TEST(SkySh, CubeFacesPointAlongTheirAxesAndTheTopFaceCentreIsTheZenith) {
     EXPECT_LT(cube_direction(f, 0.5f, 1.0f).y, -0.7f) << "face " << f;
   }
   SkyRadiance sky{.zenith = {1, 0, 0}, .horizon = {0, 1, 0}, .ground = {0, 0, 1}};
-  std::vector<std::vector<float>> mips = sky_cube_mips(sky, 16);
+  std::vector<std::vector<float>> mips =
+      cube_from_radiance([&](const glm::vec3& d) { return sky_radiance(sky, d); }, 16).mips;
   ASSERT_EQ(mips.size(), 5u);  // 16, 8, 4, 2, 1
   EXPECT_EQ(mips.back().size(), 6u * 4u);
   const float* top = &mips[0][((2 * 16 + 8) * 16 + 8) * 4];  // +Y face, near its centre

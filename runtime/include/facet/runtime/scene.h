@@ -101,6 +101,18 @@ struct SceneSky {
   float intensity = 1;
 };
 
+// The environment every object reflects (docs/scene-format.md): an
+// equirectangular HDR image or a uniform radiance, as a GGX-prefiltered cube
+// in unity_SpecCube0 (facet/runtime/environment.h); also the ambient SH
+// unless the scene gives `ambient`, and what camera.clear "sky" draws.
+struct SceneEnvironment {
+  std::string file;           // resolved path of a linear .hdr or .exr image; empty: `color`
+  Vec3 color{1, 1, 1};        // linear radiance of a uniform environment
+  float intensity = 1;
+  float rotation = 0;         // degrees about +Y, as Skybox/Panoramic's _Rotation
+  int resolution = 128;       // texels a side of the cube's faces (a power of two)
+};
+
 enum class FogMode { off, linear, exp, exp2 };
 
 struct SceneFog {
@@ -157,6 +169,8 @@ struct Scene {
   std::vector<SceneObject> objects;
   Vec3 ambient{0.2f, 0.2f, 0.2f};   // sRGB-authored flat ambient
   std::optional<SceneSky> sky;      // replaces the flat ambient when present
+  bool ambient_given = false;       // `ambient` was written (else an environment supplies it)
+  std::optional<SceneEnvironment> environment;
   SceneFog fog;
   Tonemap tonemap = Tonemap::none;
   int pixel_light_count = 4;        // Unity's default pixel light limit

@@ -71,12 +71,6 @@ ShCoefficients light_sh(const glm::vec3& to_light, const glm::vec3& color);
 // The CPU twin of FacetSHEval (clamped at 0 as the shader does).
 glm::vec3 eval_unity_sh(const UnitySh& sh, const glm::vec3& n);
 
-// The environment cube of a sky: `size` texels per face, faces in Vulkan's
-// order (+X, -X, +Y, -Y, +Z, -Z), each face's rows from t = 0, RGBA floats;
-// then each smaller mip by a 2x2 box filter down to 1 texel (mips[0] is the
-// full size). Texel directions follow Vulkan's cube face selection.
-std::vector<std::vector<float>> sky_cube_mips(const SkyRadiance& sky, uint32_t size);
-
 // The world direction of texel centre (s, t) in 0..1 of cube face `face`.
 glm::vec3 cube_direction(int face, float s, float t);
 
