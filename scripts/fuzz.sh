@@ -132,8 +132,11 @@ run_target() {
     echo " FINDING (exit $status)"
     [[ -n $found ]] && echo "  input: $found"
     echo "  log:   $log"
-    cat "${logs[@]}" | grep -m1 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|property failed|internal compiler error' \
-      | sed 's/^/  /' || true
+    # The report's first line and the top of its stack: in CI the log and
+    # the input stay on the CI machine, so this is what there is to read.
+    cat "${logs[@]}" | grep -m1 -A24 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|property failed|internal compiler error' \
+      | grep -E 'ERROR|runtime error|property failed|internal compiler error|^(READ|WRITE) |^ *#[0-9]+ |allocated by|located' \
+      | head -20 | sed 's/^/  /' || true
     return 1
   fi
   echo " no findings"

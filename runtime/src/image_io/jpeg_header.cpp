@@ -10,26 +10,35 @@
 namespace facet::runtime {
 namespace {
 
-constexpr uint8_t kApp13 = 0xED;
+constexpr uint8_t kApp1 = 0xE1, kApp2 = 0xE2, kApp13 = 0xED;
 constexpr uint8_t kEndOfImage = 0xD9;
 
 size_t big_endian16(const uint8_t* p) { return size_t(p[0]) << 8 | p[1]; }
 
+// OpenImageIO 2.4 compares the start of every APP1 (Exif, XMP), APP2 (ICC
+// profile) and APP13 (Photoshop) marker it keeps with an identifier by
+// strcmp, as a C string: a marker whose data holds no NUL is read past its
+// end (fuzz_image, with ASan's strict string checks: an APP1 of 6 bytes and
+// no NUL; a marker holding "Exif" or part of "Photoshop 3.0" without the NUL
+// is read past even by a lenient strcmp). Every identifier these markers
+// carry ends with a NUL, so such a marker is refused.
+std::optional<std::string> identifier_problem(uint8_t marker, const std::vector<uint8_t>& data) {
+  if (std::find(data.begin(), data.end(), uint8_t(0)) != data.end()) return std::nullopt;
+  if (data.empty()) return fmt::format("the JPEG has an empty APP{} marker", marker - 0xE0);
+  return fmt::format("the JPEG's APP{} marker holds {} bytes and no NUL-terminated identifier (such as \"Exif\")",
+                     marker - 0xE0, data.size());
+}
+
 // The IPTC block of an APP13 marker's data as OpenImageIO 2.4 reads it
-// (jpeg_decode_iptc): "Photoshop 3.0\0" compared with strcmp, "8BIM",
-// resource 0x0404, 4 bytes, then a 2-byte size of the records that follow,
-// which it reads without comparing with the marker's length. (Each record's
-// own length is clamped to that size, so the size is what must fit.)
+// (jpeg_decode_iptc): "Photoshop 3.0\0", "8BIM", resource 0x0404, 4 bytes,
+// then a 2-byte size of the records that follow, which it reads without
+// comparing with the marker's length. (Each record's own length is clamped
+// to that size, so the size is what must fit.) `data` holds a NUL.
 std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
   static constexpr char kPhotoshop[] = "Photoshop 3.0";  // and its NUL: 14 bytes
   constexpr size_t kHeader = sizeof(kPhotoshop) + 4 + 2 + 4 + 2;  // 26: the records start here
-  // An empty marker is a prefix of every text: OpenImageIO's strcmp reads
-  // past it at once.
-  if (data.empty()) return std::string("the JPEG has an empty APP13 marker");
-  const size_t compared = std::min(data.size(), sizeof(kPhotoshop));
-  if (std::memcmp(data.data(), kPhotoshop, compared) != 0) return std::nullopt;  // strcmp stops inside the data
-  if (data.size() < sizeof(kPhotoshop)) {
-    return fmt::format("the JPEG's APP13 marker holds {} bytes of \"Photoshop 3.0\" without its end", data.size());
+  if (data.size() < sizeof(kPhotoshop) || std::memcmp(data.data(), kPhotoshop, sizeof(kPhotoshop)) != 0) {
+    return std::nullopt;
   }
   if (data.size() < kHeader) {
     return fmt::format("the JPEG's IPTC block (APP13) ends at byte {} of its {}-byte header", data.size(), kHeader);
@@ -53,7 +62,7 @@ std::optional<std::string> iptc_problem(const std::vector<uint8_t>& data) {
 // is padded with end-of-image markers. Markers after the first scan count too: for a progressive or
 // multi-scan file, libjpeg reads the whole file before OpenImageIO looks at
 // the saved markers.
-std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
+std::optional<std::string> jpeg_marker_problem(std::istream& file) {
   uint8_t soi[2] = {};
   if (!file.read(reinterpret_cast<char*>(soi), 2) || soi[0] != 0xFF || soi[1] != 0xD8) return std::nullopt;
   for (;;) {
@@ -70,7 +79,7 @@ std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
     uint8_t size[2] = {};
     if (!file.read(reinterpret_cast<char*>(size), 2)) return std::nullopt;
     const size_t length = std::max<size_t>(big_endian16(size), 2);  // libjpeg: a length below 2 holds no data
-    if (marker != kApp13) {  // the start of scan's header too; its data follows it
+    if (marker != kApp1 && marker != kApp2 && marker != kApp13) {  // the start of scan's header too; its data follows it
       file.seekg(std::streamoff(length - 2), std::ios::cur);
       continue;
     }
@@ -78,7 +87,10 @@ std::optional<std::string> jpeg_iptc_problem(std::istream& file) {
     file.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size()));
     const size_t read = size_t(file.gcount());
     for (size_t i = read; i < data.size(); ++i) data[i] = (i - read) % 2 == 0 ? 0xFF : kEndOfImage;
-    if (std::optional<std::string> problem = iptc_problem(data)) return problem;
+    if (std::optional<std::string> problem = identifier_problem(uint8_t(marker), data)) return problem;
+    if (marker == kApp13) {
+      if (std::optional<std::string> problem = iptc_problem(data)) return problem;
+    }
     if (!file) return std::nullopt;
   }
 }

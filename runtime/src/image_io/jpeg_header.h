@@ -1,9 +1,11 @@
-// A JPEG's Photoshop IPTC block (APP13), checked before OpenImageIO opens the
-// file: OpenImageIO 2.4 decodes it while opening, trusting the block's
+// A JPEG's metadata markers, checked before OpenImageIO opens the file:
+// OpenImageIO 2.4 compares the start of each APP1, APP2 and APP13 marker
+// with an identifier ("Exif", the XMP namespace, "ICC_PROFILE", "Photoshop
+// 3.0") by strcmp, which reads past a marker holding no NUL; and it decodes
+// a Photoshop IPTC block (APP13) while opening, trusting the block's
 // declared size of its records without comparing it with the marker's
-// length, and reads past the marker's data when it is larger (found by
-// fuzz_image); it also compares the marker's start with "Photoshop 3.0" by
-// strcmp, which reads past a marker holding part of that text and no NUL.
+// length, so reads past the marker's data when it is larger. Both were
+// found by fuzz_image.
 #pragma once
 
 #include <istream>
@@ -12,9 +14,10 @@
 
 namespace facet::runtime {
 
-// Why an IPTC block of the JPEG in `file` (read from its start) cannot be
-// right, or nullopt when each fits its marker or there is none, or `file` is
-// not a JPEG. Every marker up to the end of the image is read.
-std::optional<std::string> jpeg_iptc_problem(std::istream& file);
+// Why an APP1, APP2 or APP13 marker of the JPEG in `file` (read from its
+// start) cannot be right, or nullopt when each holds a NUL and each IPTC
+// block fits its marker, or `file` is not a JPEG. Every marker up to the end
+// of the image is read.
+std::optional<std::string> jpeg_marker_problem(std::istream& file);
 
 }  // namespace facet::runtime

@@ -36,7 +36,7 @@ std::optional<std::string> header_problem(const std::string& path, const ImageLi
   if (std::optional<std::string> problem = bmp_header_problem(file, limits)) return problem;
   file.clear();
   file.seekg(0);
-  if (std::optional<std::string> problem = jpeg_iptc_problem(file)) return problem;
+  if (std::optional<std::string> problem = jpeg_marker_problem(file)) return problem;
   file.clear();
   file.seekg(0);
   if (std::optional<std::string> problem = png_chunk_problem(file, size)) return problem;

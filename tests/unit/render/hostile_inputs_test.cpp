@@ -401,7 +401,12 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
 // marker (UBSan), which OpenImageIO's strcmp would read past: refused too.
 // A 16-worker run on 2026-12-06 found a BMP declaring RLE8 compression at
 // 24 bits a pixel, which OpenImageIO decodes out of bounds (SEGV); BMP's
-// own pairings of bits and compression are checked first now.
+// own pairings of bits and compression are checked first now. CI's smoke
+// run on 2026-12-07 (ASan's strict string checks on) found a JPEG whose APP1
+// marker holds 6 bytes and no NUL: OpenImageIO 2.4 compares APP1, APP2 and
+// APP13 data with identifiers by strcmp, reading past such a marker; every
+// such marker without a NUL is refused now (with one holding "Exif" and one
+// holding "ICC_PROFILE" without their NULs, made by hand).
 struct FuzzFoundImage {
   const char* file;
   const char* expected;
@@ -432,6 +437,12 @@ INSTANTIATE_TEST_SUITE_P(
                       FuzzFoundImage{"exr-data-window-only-openexr-finds.exr",
                                      "the EXR header of part 0 has no dataWindow (box2i) attribute"},
                       FuzzFoundImage{"jpeg-empty-app13.jpg", "the JPEG has an empty APP13 marker"},
+                      FuzzFoundImage{"jpeg-app1-without-nul.jpg",
+                                     "the JPEG's APP1 marker holds 6 bytes and no NUL-terminated identifier"},
+                      FuzzFoundImage{"jpeg-app1-exif-without-nul.jpg",
+                                     "the JPEG's APP1 marker holds 4 bytes and no NUL-terminated identifier"},
+                      FuzzFoundImage{"jpeg-app2-icc-without-nul.jpg",
+                                     "the JPEG's APP2 marker holds 11 bytes and no NUL-terminated identifier"},
                       FuzzFoundImage{"jpeg-iptc-past-its-marker.jpg",
                                      "the JPEG's IPTC block (APP13) declares 28761 bytes of records, but its marker "
                                      "holds 89"},
@@ -540,6 +551,21 @@ TEST(HostileExrControl, TheRealExrRenders) {
   expect_textured_render("fits", write_file("fits.exr", small_exr_bytes()));
 }
 
+// The control of the identifier check: APP1 and APP2 markers whose
+// identifiers end with their NUL (XMP, an ICC profile's header) render.
+TEST(JpegIdentifierControl, AJpegWithNulTerminatedApp1AndApp2IdentifiersRenders) {
+  std::ifstream in(std::string(FACET_SOURCE_DIR) + "/tests/fuzz/corpus/image/small.jpg", std::ios::binary);
+  std::string jpeg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(jpeg.size(), 2u);
+  auto marker = [](char code, const std::string& data) {
+    size_t length = data.size() + 2;
+    return std::string("\xff", 1) + code + char(length >> 8) + char(length & 0xff) + data;
+  };
+  const std::string xmp = marker('\xe1', std::string("http://ns.adobe.com/xap/1.0/", 29) + "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\"/>");
+  const std::string icc = marker('\xe2', std::string("ICC_PROFILE", 12) + std::string("\x01\x01", 2) + "not a profile");
+  expect_textured_render("with_xmp_icc", write_file("with_xmp_icc.jpg", jpeg.substr(0, 2) + xmp + icc + jpeg.substr(2)));
+}
+
 // The control of the JPEG IPTC check: a real JPEG (tests/fuzz/corpus/image/
 // small.jpg, written by oiiotool) with a well-formed Photoshop IPTC block in
 // an APP13 marker after its SOI renders.
@@ -571,7 +597,7 @@ TEST(JpegIptcControl, AJpegWithAWellFormedIptcBlockRenders) {
   std::string unended = jpeg.substr(0, 2) + app13("Photoshop 3.0") + jpeg.substr(2);
   for (const auto& [name, bytes, expected] :
        {std::tuple{"late_iptc", late, std::string("declares ") + std::to_string(records.size() + 1) + " bytes"},
-        std::tuple{"unended_iptc", unended, std::string("holds 13 bytes of \"Photoshop 3.0\" without its end")}}) {
+        std::tuple{"unended_iptc", unended, std::string("the JPEG's APP13 marker holds 13 bytes and no NUL-terminated identifier")}}) {
     std::string file = write_file(std::string(name) + ".jpg", bytes);
     Outcome refused = render_expecting_failure(name, write_scene(name, textured_scene(file)));
     EXPECT_EQ(refused.code, 1) << name;
