@@ -100,7 +100,7 @@ run_target() {
     run_dir=$jobs_dir
   fi
   # shellcheck disable=SC2046  # target_args is a word list by design
-  (cd "$run_dir" && ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0} \
+  (cd "$run_dir" && ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
   LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0} \
     "$build/tests/fuzz/$name" "$scratch" "$root/tests/fuzz/corpus/$1" \
