@@ -2,9 +2,9 @@
 // vertex/fragment programs. Shadows: SHADOWS_SCREEN (directional lights)
 // and SHADOWS_DEPTH (spot lights) sample the light's shadow map through a
 // light-space coordinate (FacetShadow.hlsl), as Unity does where it has no
-// screen-space shadows; SHADOWS_CUBE (point lights) is not rendered and
-// gives 1. Attenuation follows POINT/SPOT/DIRECTIONAL/DIRECTIONAL_COOKIE
-// (FacetLight.hlsl).
+// screen-space shadows; SHADOWS_CUBE (point lights) samples the light's
+// distance cube towards the world position. Attenuation follows
+// POINT/SPOT/DIRECTIONAL/DIRECTIONAL_COOKIE (FacetLight.hlsl).
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
 
@@ -33,6 +33,15 @@
 #define SHADOW_ATTENUATION(a) FacetSampleShadow(a._ShadowCoord)
 #define UNITY_SHADOW_ATTENUATION(a, worldPos) SHADOW_ATTENUATION(a)
 #define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = FacetShadowCoord(wpos);
+#elif defined(SHADOWS_CUBE)
+// The vector from the light to the vertex, as Unity's cube form keeps it.
+#define SHADOW_COORDS(idx1) float3 _ShadowCoord : TEXCOORD##idx1;
+#define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
+#define TRANSFER_SHADOW(a) a._ShadowCoord = mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz - _LightPositionRange.xyz;
+#define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
+#define SHADOW_ATTENUATION(a) FacetSampleShadowCube(a._ShadowCoord)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) FacetSampleShadowCube((worldPos) - _LightPositionRange.xyz)
+#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = (wpos) - _LightPositionRange.xyz;
 #else
 #define SHADOW_COORDS(idx1)
 #define UNITY_SHADOW_COORDS(idx1)
@@ -57,6 +66,8 @@ half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 scree
     half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
 #if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
     half realtime = FacetSampleShadow(FacetShadowCoord(worldPos));
+#elif defined(SHADOWS_CUBE)
+    half realtime = FacetSampleShadowCube(worldPos - _LightPositionRange.xyz);
 #else
     half realtime = 1.0;
 #endif

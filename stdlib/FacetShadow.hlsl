@@ -8,11 +8,52 @@
 //     (percentage-closer filtering), chosen at run time because Unity's
 //     ForwardBase variants have no SHADOWS_SOFT (its screen-space pass filters);
 //   _ShadowMapTexture_TexelSize: (1/size, 1/size, size, size).
+// A point light (SHADOWS_CUBE) has a distance cube instead (below).
 #ifndef FACET_SHADOW_INCLUDED
 #define FACET_SHADOW_INCLUDED
 
 #include "FacetBuiltins.hlsl"
 
+#if defined(SHADOWS_CUBE)
+// A point light's shadow cube (SHADOWS_CUBE), set 1 binding 2: each texel
+// holds the distance from the light to the nearest caster along its
+// direction, over the light's range (_LightPositionRange.w), plus the
+// caster's bias (UnityCG.cginc's SHADOW_CASTER_FRAGMENT).
+#if !defined(SHADOWMAPSAMPLER_DEFINED) && !defined(SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED)
+samplerCUBE _ShadowMapTexture : register(s2, space1);
+#endif
+#ifndef SHADOWMAPSAMPLER_DEFINED
+#define SHADOWMAPSAMPLER_DEFINED
+#endif
+
+float FacetShadowCompareCube(float3 vec, float distance)
+{
+    return texCUBElod(_ShadowMapTexture, float4(vec, 0.0)).r >= distance ? 1.0 : 0.0;
+}
+
+// The light's visibility at `vec` = world position - light position: 1 lit,
+// _LightShadowData.x fully shadowed; soft shadows average four lookups
+// turned about the direction by a texel and a half, as Unity's soft cube
+// shadows do.
+float FacetSampleShadowCube(float3 vec)
+{
+    // 3 % nearer than the receiver: a caster this close behind it in
+    // distance is the receiver itself (the cube's texels are wide at a
+    // grazing angle), as Unity's _LightProjectionParams.w bias does.
+    float distance = length(vec) * _LightPositionRange.w * 0.97;
+    float lit;
+    if (_LightShadowData.y > 0.5) {
+        float spread = 1.5 * _ShadowMapTexture_TexelSize.x * 2.0 * length(vec);
+        lit = 0.25 * (FacetShadowCompareCube(vec + float3(spread, spread, spread), distance)
+                    + FacetShadowCompareCube(vec + float3(-spread, -spread, spread), distance)
+                    + FacetShadowCompareCube(vec + float3(-spread, spread, -spread), distance)
+                    + FacetShadowCompareCube(vec + float3(spread, -spread, -spread), distance));
+    } else {
+        lit = FacetShadowCompareCube(vec, distance);
+    }
+    return lerp(_LightShadowData.x, 1.0, lit);
+}
+#else
 // The light's shadow map (depth; white without one), set 1 binding 2
 // (docs/binding-model.md). As in Unity's shadow library, a program that
 // declares _ShadowMapTexture itself before the includes (and says so with
@@ -51,6 +92,7 @@ float FacetSampleShadow(float4 shadowCoord)
     return lerp(_LightShadowData.x, 1.0, lit);
 }
 
+#endif
 float4 FacetShadowCoord(float3 worldPos) { return mul(unity_WorldToShadow[0], float4(worldPos, 1.0)); }
 
 #endif // FACET_SHADOW_INCLUDED

@@ -1,8 +1,9 @@
 // Unity's shadow-sampling library over FacetShadow.hlsl: shadow-map lookups
 // (UnitySampleShadowmap and the PCF forms), shadow fade, baked occlusion
 // (shadow mask) and realtime/baked mixing. facet renders one light-space
-// shadow map per light (no cascades, no point-light cube shadows: the cube
-// form returns 1) and no shadow mask (unity_ShadowMask is white).
+// shadow map per directional or spot light (no cascades), a distance cube
+// per point light (SHADOWS_CUBE), and no shadow mask (unity_ShadowMask is
+// white).
 #ifndef UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 #define UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 
@@ -19,13 +20,16 @@
 #endif
 #define SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED
 
+#if defined(SHADOWS_CUBE)
+// Visibility towards vec = world position - light position (FacetSampleShadowCube).
+inline half UnitySampleShadowmap(float3 vec) { return FacetSampleShadowCube(vec); }
+inline float SampleCubeDistance(float3 vec) { return texCUBElod(_ShadowMapTexture, float4(vec, 0.0)).r; }
+#else
 // Visibility at a projective shadow coordinate (unity_WorldToShadow space):
 // 1 lit, _LightShadowData.x fully shadowed (FacetSampleShadow: 3x3 PCF when
 // the light's shadows are soft).
 inline fixed UnitySampleShadowmap(float4 shadowCoord) { return FacetSampleShadow(shadowCoord); }
-// Point-light (cube) shadows are not rendered: lit.
-inline half UnitySampleShadowmap(float3 vec) { return 1.0; }
-inline float SampleCubeDistance(float3 vec) { return 1.0; }
+#endif
 
 // Receiver-plane depth bias (tilting the PCF kernel along the receiver) is
 // off, as in Unity by default: zero.
@@ -35,6 +39,7 @@ float3 UnityCombineShadowcoordComponents(float2 baseUV, float2 deltaUV, float de
     return float3(baseUV + deltaUV, depth + receiverPlaneDepthBias.z + dot(deltaUV, receiverPlaneDepthBias.xy));
 }
 
+#if !defined(SHADOWS_CUBE)
 // Box-filtered comparisons over (2r+1)^2 texels around coord.xy at depth
 // coord.z (coord already divided by w): the lit fraction, 0..1, without
 // the shadow strength.
@@ -59,6 +64,7 @@ half UnitySampleShadowmap_PCF5x5Tent(float4 coord, float3 receiverPlaneDepthBias
 half UnitySampleShadowmap_PCF7x7Tent(float4 coord, float3 receiverPlaneDepthBias) { return FacetShadowPCF(coord, receiverPlaneDepthBias, 3); }
 half UnitySampleShadowmap_PCF3x3Gaussian(float4 coord, float3 receiverPlaneDepthBias) { return FacetShadowPCF(coord, receiverPlaneDepthBias, 1); }
 half UnitySampleShadowmap_PCF5x5Gaussian(float4 coord, float3 receiverPlaneDepthBias) { return FacetShadowPCF(coord, receiverPlaneDepthBias, 2); }
+#endif
 
 // ---- baked occlusion (shadow mask) ------------------------------------------------
 // SHADOWS_SHADOWMASK: the light's channel (unity_OcclusionMaskSelector) of

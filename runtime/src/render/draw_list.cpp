@@ -307,10 +307,6 @@ struct Builder {
         global.insert(global.end(), shadows.begin(), shadows.end());
         add_record.why += "; its shadows: " + join(shadows);
       }
-      const SceneLight& scene_light = scene.lights[extra[k]];
-      if (scene_light.type == LightType::point && scene_light.shadows != ShadowMode::none) {
-        add_record.why += "; point-light shadows are not rendered";
-      }
       if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
       FACET_TRY(add(object, p, &light, global, add_record));
     }

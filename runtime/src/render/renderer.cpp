@@ -530,7 +530,10 @@ struct Recorder {
             if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
             described.image = *index;
           }
-          if (is_depth_format((*image)->desc().format) && point_sampler) info.sampler = point_sampler;
+          // Depth is not linearly filterable; a shadow cube's distances must not be blended.
+          if ((is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image))) && point_sampler) {
+            info.sampler = point_sampler;
+          }
           info.imageView = (*image)->view();
           info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
           type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER

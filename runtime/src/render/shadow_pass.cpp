@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <initializer_list>
+#include <span>
 
 #include "facet/runtime/vulkan_context.h"
 #include "render/program.h"
@@ -12,27 +14,49 @@ namespace {
 
 RenderError error(std::string message) { return RenderError{std::move(message)}; }
 
+Result<VkRenderPass, VkResult> create_pass(VkDevice device, std::span<const VkAttachmentDescription> attachments,
+                                          const VkSubpassDescription& subpass, VkPipelineStageFlags written_stages,
+                                          VkAccessFlags written_access) {
+  // Before: the last frame's receivers read the map. After: this frame's do.
+  VkSubpassDependency deps[2]{};
+  deps[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, written_stages, VK_ACCESS_SHADER_READ_BIT,
+             written_access, 0};
+  deps[1] = {0, VK_SUBPASS_EXTERNAL, written_stages, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, written_access,
+             VK_ACCESS_SHADER_READ_BIT, 0};
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = uint32_t(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 2;
+  info.pDependencies = deps;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateRenderPass(device, &info, nullptr, &pass); r != VK_SUCCESS) return unexpected(r);
+  return pass;
+}
+
+VkAttachmentDescription cleared(VkFormat format, VkAttachmentStoreOp store, VkImageLayout final_layout) {
+  VkAttachmentDescription a{};
+  a.format = format;
+  a.samples = VK_SAMPLE_COUNT_1_BIT;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = store;
+  a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  a.finalLayout = final_layout;
+  return a;
+}
+
 // Depth, cleared to the far plane, left for the receivers' fragment stage;
 // and an R8 colour attachment that nothing writes or keeps, there because
 // casters' fragment stages write SV_Target (a fragment output without an
 // attachment is a validation warning).
 Result<VkRenderPass, RenderError> make_depth_pass(VkDevice device) {
-  VkAttachmentDescription attachments[2]{};
-  VkAttachmentDescription& depth = attachments[0];
-  depth.format = VK_FORMAT_D32_SFLOAT;
-  depth.samples = VK_SAMPLE_COUNT_1_BIT;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  VkAttachmentDescription& unused = attachments[1];
-  unused = depth;
-  unused.format = VK_FORMAT_R8_UNORM;
-  unused.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  unused.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  unused.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentDescription attachments[2] = {
+      cleared(VK_FORMAT_D32_SFLOAT, VK_ATTACHMENT_STORE_OP_STORE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+      cleared(VK_FORMAT_R8_UNORM, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL)};
+  attachments[1].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkAttachmentReference color_ref{1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
@@ -40,25 +64,32 @@ Result<VkRenderPass, RenderError> make_depth_pass(VkDevice device) {
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &color_ref;
   subpass.pDepthStencilAttachment = &ref;
-  // Before: the last frame's receivers read the map. After: this frame's do.
-  VkSubpassDependency deps[2]{};
-  deps[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-             VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-             VK_ACCESS_SHADER_READ_BIT, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, 0};
-  deps[1] = {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, 0};
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = 2;
-  info.pAttachments = attachments;
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = 2;
-  info.pDependencies = deps;
-  VkRenderPass pass = VK_NULL_HANDLE;
-  if (VkResult r = vkCreateRenderPass(device, &info, nullptr, &pass); r != VK_SUCCESS) {
-    return unexpected(error("cannot create the shadow-map render pass: " + vk_result_name(r)));
-  }
-  return pass;
+  Result<VkRenderPass, VkResult> pass =
+      create_pass(device, attachments, subpass,
+                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+  if (!pass) return unexpected(error("cannot create the shadow-map render pass: " + vk_result_name(pass.error())));
+  return *pass;
+}
+
+// A cube face: the casters' distances (R32F, cleared far beyond any range),
+// kept for the receivers, with a depth buffer that only orders the casters.
+Result<VkRenderPass, RenderError> make_cube_pass(VkDevice device) {
+  VkAttachmentDescription attachments[2] = {
+      cleared(VK_FORMAT_R32_SFLOAT, VK_ATTACHMENT_STORE_OP_STORE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+      cleared(VK_FORMAT_D32_SFLOAT, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
+  VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color_ref;
+  subpass.pDepthStencilAttachment = &depth_ref;
+  Result<VkRenderPass, VkResult> pass =
+      create_pass(device, attachments, subpass, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  if (!pass) return unexpected(error("cannot create the shadow-cube render pass: " + vk_result_name(pass.error())));
+  return *pass;
 }
 
 bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) {
@@ -66,6 +97,23 @@ bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) 
                      [&](const Draw& d) {
                        return d.light && d.light->scene_light() == light && samples_shadow_map(d.record.keywords);
                      });
+}
+
+Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPass pass,
+                                                   std::initializer_list<VkImageView> views, uint32_t width,
+                                                   uint32_t height) {
+  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  fb.renderPass = pass;
+  fb.attachmentCount = uint32_t(views.size());
+  fb.pAttachments = views.begin();
+  fb.width = width;
+  fb.height = height;
+  fb.layers = 1;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateFramebuffer(device, &fb, nullptr, &framebuffer); r != VK_SUCCESS) {
+    return unexpected(error("cannot create a shadow-map framebuffer: " + vk_result_name(r)));
+  }
+  return framebuffer;
 }
 
 Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
@@ -78,18 +126,37 @@ Result<void, RenderError> make_target(const Context& context, VkRenderPass pass,
                                                     .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
   if (!unused) return unexpected(error(describe(unused.error())));
   map.unused_color = std::move(*unused);
-  VkImageView views[2] = {map.depth.view(), map.unused_color.view()};
-  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb.renderPass = pass;
-  fb.attachmentCount = 2;
-  fb.pAttachments = views;
-  fb.width = map.width;
-  fb.height = map.height;
-  fb.layers = 1;
-  if (vkCreateFramebuffer(context.device(), &fb, nullptr, &map.framebuffer) != VK_SUCCESS) {
-    return unexpected(error("cannot create a shadow-map framebuffer"));
-  }
+  Result<VkFramebuffer, RenderError> fb =
+      make_framebuffer(context.device(), pass, {map.depth.view(), map.unused_color.view()}, map.width, map.height);
+  if (!fb) return unexpected(fb.error());
+  map.framebuffer = *fb;
   return {};
+}
+
+Result<std::shared_ptr<CubeTarget>, RenderError> make_cube_target(const Context& context, uint32_t size) {
+  auto cube = std::make_shared<CubeTarget>();
+  cube->device = context.device();
+  VkResultOf<Image> color = create_image(context, {.width = size, .height = size, .layers = 6,
+                                                   .format = VK_FORMAT_R32_SFLOAT,
+                                                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                   .view = VK_IMAGE_VIEW_TYPE_CUBE});
+  if (!color) return unexpected(error(describe(color.error())));
+  cube->color = std::move(*color);
+  VkResultOf<Image> depth = create_image(context, {.width = size, .height = size, .format = VK_FORMAT_D32_SFLOAT,
+                                                   .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT});
+  if (!depth) return unexpected(error(describe(depth.error())));
+  cube->depth = std::move(*depth);
+  for (uint32_t face = 0; face < 6; ++face) {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = cube->color.handle();
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = VK_FORMAT_R32_SFLOAT;
+    info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, face, 1};
+    if (VkResult r = vkCreateImageView(context.device(), &info, nullptr, &cube->faces[face]); r != VK_SUCCESS) {
+      return unexpected(error("cannot create a shadow-cube face view: " + vk_result_name(r)));
+    }
+  }
+  return cube;
 }
 
 Result<void, RenderError> make_pipelines(const Context& context, const Scene& scene, const std::vector<ObjectState>& objects,
@@ -98,7 +165,7 @@ Result<void, RenderError> make_pipelines(const Context& context, const Scene& sc
   for (const Draw& d : map.casters.draws) {
     bool created = false;
     PipelineState state = d.state;
-    state.color_mask = 0;
+    if (!map.cube) state.color_mask = 0;  // a cube keeps the distances the casters write
     state.offset_factor += map.view.slope_bias;
     Result<VkPipeline, std::string> p =
         get_pipeline(context, *d.variant->program, state, objects[d.object].mirrored, pass, cache, &created);
@@ -117,7 +184,60 @@ Result<void, RenderError> ensure_render_pass(VkDevice device, ShadowPasses& out)
   return {};
 }
 
+Result<void, RenderError> ensure_cube_pass(VkDevice device, ShadowPasses& out) {
+  if (out.cube_pass) return {};
+  Result<VkRenderPass, RenderError> pass = make_cube_pass(device);
+  if (!pass) return unexpected(pass.error());
+  out.cube_pass = *pass;
+  return {};
+}
+
+// The frame uniforms of the scene seen through `camera` with the light's lens.
+UniformValues light_frame(const Scene& scene, const ShadowView& view, const CameraMatrices& camera, uint32_t size) {
+  Scene seen_from_light = scene;
+  seen_from_light.camera = view.lens;
+  // Casters read depth or distance only: the flat ambient's SH stands in for the environment's.
+  return frame_uniforms(seen_from_light, camera, int(size), int(size), ambient_sh(scene));
+}
+
+// Six entries, one a face, sharing one cube target.
+Result<void, RenderError> prepare_cube(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
+                                       const LightValues* light, const ShadowView& view, ShaderLibrary& library,
+                                       VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+  const uint32_t size = uint32_t(scene.shadow_resolution);
+  FACET_TRY(ensure_cube_pass(context.device(), out));
+  Result<std::shared_ptr<CubeTarget>, RenderError> cube = make_cube_target(context, size);
+  if (!cube) return unexpected(cube.error());
+  for (int face = 0; face < 6; ++face) {
+    auto map = std::make_unique<ShadowMap>();
+    map->view = view;
+    map->view.camera = view.faces[size_t(face)];
+    map->light = light;
+    map->width = map->height = size;
+    map->cube = *cube;
+    map->face = face;
+    // Each face draws its own copy: a draw's uniforms hold one camera.
+    Result<DrawListResult, RenderError> casters = build_caster_draws(context, scene, objects, *light, view, library);
+    if (!casters) return unexpected(casters.error());
+    map->casters = std::move(*casters);
+    map->frame = light_frame(scene, view, map->view.camera, size);
+    Result<VkFramebuffer, RenderError> fb = make_framebuffer(
+        context.device(), out.cube_pass, {map->cube->faces[size_t(face)], map->cube->depth.view()}, size, size);
+    if (!fb) return unexpected(fb.error());
+    map->framebuffer = *fb;
+    FACET_TRY(make_pipelines(context, scene, objects, out.cube_pass, cache, *map, pipelines_created));
+    out.maps.push_back(std::move(map));
+  }
+  return {};
+}
+
 }  // namespace
+
+CubeTarget::~CubeTarget() {
+  for (VkImageView view : faces) {
+    if (view) vkDestroyImageView(device, view, nullptr);
+  }
+}
 
 ShadowPasses::~ShadowPasses() {
   if (!device) return;
@@ -126,13 +246,22 @@ ShadowPasses::~ShadowPasses() {
     if (map->framebuffer) vkDestroyFramebuffer(device, map->framebuffer, nullptr);
   }
   if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
+  if (cube_pass) vkDestroyRenderPass(device, cube_pass, nullptr);
 }
 
 const Image* ShadowPasses::map_of(const LightValues* light) const {
   for (const auto& map : maps) {
-    if (light && map->light == light->scene_light()) return &map->depth;
+    if (light && map->light == light->scene_light()) return map->cube ? &map->cube->color : &map->depth;
   }
   return nullptr;
+}
+
+bool ShadowPasses::is_cube(const Image* image) const {
+  return std::any_of(maps.begin(), maps.end(), [&](const auto& m) { return m->cube && &m->cube->color == image; });
+}
+
+size_t ShadowPasses::light_maps() const {
+  return size_t(std::count_if(maps.begin(), maps.end(), [](const auto& m) { return m->light && m->face == 0; }));
 }
 
 const ShadowMap* ShadowPasses::camera_depth() const {
@@ -151,6 +280,10 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
   for (const ShadowView& view : views) {
     const LightValues* light = &lights.lights[view.light];
     if (!light_is_sampled(light, draws)) continue;
+    if (!view.faces.empty()) {
+      FACET_TRY(prepare_cube(context, scene, objects, light, view, library, cache, out, pipelines_created));
+      continue;
+    }
     FACET_TRY(ensure_render_pass(context.device(), out));
     auto map = std::make_unique<ShadowMap>();
     map->view = view;
@@ -159,10 +292,7 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
     Result<DrawListResult, RenderError> casters = build_caster_draws(context, scene, objects, *light, view, library);
     if (!casters) return unexpected(casters.error());
     map->casters = std::move(*casters);
-    Scene seen_from_light = scene;
-    seen_from_light.camera = view.lens;
-    // Casters read depth only: the flat ambient's SH stands in for the environment's.
-    map->frame = frame_uniforms(seen_from_light, view.camera, int(size), int(size), ambient_sh(scene));
+    map->frame = light_frame(scene, view, view.camera, size);
     FACET_TRY(make_target(context, out.render_pass, *map));
     FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
     out.maps.push_back(std::move(map));
@@ -183,7 +313,7 @@ Result<void, RenderError> prepare_camera_depth(const Context& context, const Sce
   map->height = height;
   Result<DrawListResult, RenderError> casters =
       caster_draws(context, scene, objects, no_light, [](const ObjectState& o) { return o.queue <= 2500; }, "",
-                   "the camera depth texture", library);
+                   "the camera depth texture", "SHADOWS_DEPTH", library);
   if (!casters) return unexpected(casters.error());
   map->casters = std::move(*casters);
   FACET_TRY(make_target(context, out.render_pass, *map));
@@ -197,14 +327,21 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
                                                  const UniformValues& camera_frame) {
   uint64_t triangles = 0;
   for (const auto& map : passes.maps) {
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
+    // A depth map clears its depth (attachment 0); a cube face its distances
+    // (attachment 0, far beyond any range) and its depth (attachment 1).
+    VkClearValue clears[2]{};
+    if (map->cube) {
+      clears[0].color = {{1e30f, 1e30f, 1e30f, 1e30f}};
+      clears[1].depthStencil = {1.0f, 0};
+    } else {
+      clears[0].depthStencil = {1.0f, 0};
+    }
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = passes.render_pass;
+    begin.renderPass = map->cube ? passes.cube_pass : passes.render_pass;
     begin.framebuffer = map->framebuffer;
     begin.renderArea = {{0, 0}, {map->width, map->height}};
-    begin.clearValueCount = 1;
-    begin.pClearValues = &clear;
+    begin.clearValueCount = map->cube ? 2 : 1;
+    begin.pClearValues = clears;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
     VkViewport viewport{0, 0, float(map->width), float(map->height), 0, 1};
     vkCmdSetViewport(commands, 0, 1, &viewport);

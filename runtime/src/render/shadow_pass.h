@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -18,6 +19,20 @@
 
 namespace facet::runtime {
 
+// A point light's distance cube (R32F, six layers, sampled as a cube) and
+// the depth buffer its faces share, with a 2D view of each face to render to.
+struct CubeTarget {
+  VkDevice device = VK_NULL_HANDLE;
+  Image color, depth;
+  std::array<VkImageView, 6> faces{};
+  CubeTarget() = default;
+  CubeTarget(const CubeTarget&) = delete;
+  CubeTarget& operator=(const CubeTarget&) = delete;
+  ~CubeTarget();
+};
+
+// One depth map, or one face of a point light's cube (`cube` set, `face`
+// 0..5; the draws and frame values are that face's, the images the cube's).
 struct ShadowMap {
   ShadowView view;
   const LightValues* light = nullptr;  // null for the camera depth texture
@@ -28,20 +43,25 @@ struct ShadowMap {
   Image unused_color;  // R8, never written (see make_depth_pass)
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   std::vector<VkPipeline> pipelines;  // per caster draw
+  std::shared_ptr<CubeTarget> cube;
+  int face = 0;
 };
 
 struct ShadowPasses {
   VkDevice device = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
-  std::vector<std::unique_ptr<ShadowMap>> maps;  // the lights' maps, then the camera depth texture
+  VkRenderPass cube_pass = VK_NULL_HANDLE;  // a cube face: R32F distance and depth
+  std::vector<std::unique_ptr<ShadowMap>> maps;  // the lights' maps (six a cube), then the camera depth texture
   ShadowPasses() = default;
   ShadowPasses(const ShadowPasses&) = delete;
   ShadowPasses& operator=(const ShadowPasses&) = delete;
   ~ShadowPasses();
-  // The map that `light`'s receivers sample, or null.
+  // The map (or cube) that `light`'s receivers sample, or null.
   const Image* map_of(const LightValues* light) const;
   const ShadowMap* camera_depth() const;
-  size_t light_maps() const { return maps.size() - (camera_depth() ? 1 : 0); }
+  bool is_cube(const Image* image) const;
+  // The lights' maps and cubes, a cube counted once.
+  size_t light_maps() const;
 };
 
 // Makes a map for each view whose light some drawn variant samples it with

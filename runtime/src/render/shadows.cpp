@@ -7,6 +7,8 @@
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "facet/runtime/sky_sh.h"
+
 namespace facet::runtime {
 namespace {
 
@@ -79,12 +81,41 @@ ShadowView spot_view(const Scene& scene, size_t index) {
   return v;
 }
 
+// Six 90-degree cameras at the light, each looking through one face of a
+// cube so that the image of face f, row t and column s, is what the cube
+// holds at cube_direction(f, s, t): the camera's +X along growing s, its +Y
+// against growing t (rows go down), its +Z through the face's centre.
+ShadowView point_view(const Scene& scene, size_t index) {
+  const SceneLight& light = scene.lights[index];
+  ShadowView v;
+  v.light = index;
+  v.lens.projection = Projection::perspective;
+  v.lens.fov = 90;
+  v.lens.near = std::max(0.01f, light.range * 0.01f);
+  v.lens.far = light.range;
+  glm::vec3 position(light.transform.position[0], light.transform.position[1], light.transform.position[2]);
+  for (int face = 0; face < 6; ++face) {
+    glm::vec3 x = glm::normalize(cube_direction(face, 1, 0.5f) - cube_direction(face, 0, 0.5f));
+    glm::vec3 y = -glm::normalize(cube_direction(face, 0.5f, 1) - cube_direction(face, 0.5f, 0));
+    glm::vec3 z = cube_direction(face, 0.5f, 0.5f);
+    glm::mat4 rotation(glm::vec4(x, 0), glm::vec4(y, 0), glm::vec4(z, 0), glm::vec4(0, 0, 0, 1));
+    v.faces.push_back(camera_matrices_at(glm::translate(glm::mat4(1), position) * rotation, v.lens, 1, 1));
+  }
+  v.camera = v.faces.front();
+  // A texel's width at half the range; the caster adds its bias to the
+  // distance it stores (world units, then over the range: UnityCG.cginc).
+  v.texel_world = light.range / float(scene.shadow_resolution);
+  v.caster_bias = {light.shadow_bias * v.texel_world, 0, light.shadow_normal_bias * v.texel_world, 0};
+  return v;
+}
+
 }  // namespace
 
 std::optional<ShadowView> shadow_view(const Scene& scene, size_t light, const std::vector<ObjectState>& objects,
                                       const glm::vec3& camera_position) {
   const SceneLight& l = scene.lights[light];
-  if (l.shadows == ShadowMode::none || l.type == LightType::point) return std::nullopt;
+  if (l.shadows == ShadowMode::none) return std::nullopt;
+  if (l.type == LightType::point) return point_view(scene, light);
   std::optional<ShadowView> v =
       l.type == LightType::directional ? directional_view(scene, light, objects, camera_position) : spot_view(scene, light);
   if (!v) return v;
@@ -111,13 +142,15 @@ void add_shadow_values(LightValues& light, const SceneLight& scene_light, const 
 }
 
 bool samples_shadow_map(const std::vector<std::string>& keywords) {
-  return has_shadow_keyword(keywords, "SHADOWS_SCREEN") || has_shadow_keyword(keywords, "SHADOWS_DEPTH");
+  return has_shadow_keyword(keywords, "SHADOWS_SCREEN") || has_shadow_keyword(keywords, "SHADOWS_DEPTH") ||
+         has_shadow_keyword(keywords, "SHADOWS_CUBE");
 }
 
 std::vector<std::string> shadow_keywords(const SceneLight& light) {
-  if (light.shadows == ShadowMode::none || light.type == LightType::point) return {};
+  if (light.shadows == ShadowMode::none) return {};
   // Directional lights use SHADOWS_SCREEN in ForwardBase and ForwardAdd alike, as in Unity.
   // Soft filtering is a uniform (_LightShadowData.y), so no SHADOWS_SOFT variant is asked for.
+  if (light.type == LightType::point) return {"SHADOWS_CUBE"};
   return {light.type == LightType::directional ? "SHADOWS_SCREEN" : "SHADOWS_DEPTH"};
 }
 
@@ -125,7 +158,7 @@ Result<DrawListResult, RenderError> caster_draws(const Context& context, const S
                                                 std::vector<ObjectState>& objects, const LightValues& light,
                                                 const std::function<bool(const ObjectState&)>& include,
                                                 const std::string& light_text, const std::string& target,
-                                                ShaderLibrary& library) {
+                                                const std::string& keyword, ShaderLibrary& library) {
   DrawListResult out;
   for (ObjectState& object : objects) {
     if (object.background || !include(object)) continue;
@@ -134,8 +167,8 @@ Result<DrawListResult, RenderError> caster_draws(const Context& context, const S
       if (!iequals(object.shader->passes[p].ir.tag("LightMode"), "ShadowCaster")) continue;
       DrawRecord record = pass_record(object, p);
       record.light = light_text;
-      record.why = "ShadowCaster: depth into " + target;
-      FACET_TRY(add_draw(context, scene, library, object, p, &light, {"SHADOWS_DEPTH"}, std::move(record), out));
+      record.why = (keyword == "SHADOWS_CUBE" ? "ShadowCaster: distance into " : "ShadowCaster: depth into ") + target;
+      FACET_TRY(add_draw(context, scene, library, object, p, &light, {keyword}, std::move(record), out));
       cast = true;
       break;  // one caster pass per object, as Unity takes the first
     }
@@ -158,11 +191,13 @@ Result<DrawListResult, RenderError> build_caster_draws(const Context& context, c
   const SceneLight& scene_light = scene.lights[view.light];
   glm::vec3 camera_position = camera_matrices(scene.camera, 1, 1).position;
   std::string light_text = light_description(scene, view.light);
+  const bool cube = scene_light.type == LightType::point;
   return caster_draws(
       context, scene, objects, light,
       [&](const ObjectState& o) { return reaches(scene, scene_light, o, camera_position); }, light_text,
-      fmt::format("the {}x{} shadow map of {}", scene.shadow_resolution, scene.shadow_resolution, light_text),
-      library);
+      fmt::format("the {}x{} shadow {} of {}", scene.shadow_resolution, scene.shadow_resolution, cube ? "cube" : "map",
+                  light_text),
+      cube ? "SHADOWS_CUBE" : "SHADOWS_DEPTH", library);
 }
 
 }  // namespace facet::runtime

@@ -2,8 +2,11 @@
 // shadowed directional light (ForwardBase, SHADOWS_SCREEN) or spot light
 // (ForwardAdd, SHADOWS_DEPTH) gets a depth map rendered from the light by
 // the ShadowCaster passes of the objects around it; receivers sample it
-// through unity_WorldToShadow[0] (stdlib/FacetShadow.hlsl). A map is made
-// only for a light whose receivers' variants actually sample it.
+// through unity_WorldToShadow[0] (stdlib/FacetShadow.hlsl). A point light
+// (ForwardAdd, SHADOWS_CUBE) gets a cube of distances: the casters'
+// SHADOWS_CUBE variants seen from the light through each of six 90-degree
+// faces. A map is made only for a light whose receivers' variants actually
+// sample it.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -31,10 +34,14 @@ struct ShadowView {
   // the depth change over one texel): soft shadows compare neighbours up to
   // a texel diagonal away, which a constant bias cannot cover on a slope.
   float slope_bias = 0;
+  // A point light's six cameras, one a cube face in Vulkan's order (+X, -X,
+  // +Y, -Y, +Z, -Z) and orientation; empty for a depth map.
+  std::vector<CameraMatrices> faces;
 };
 
-// Where `light` (directional or spot, shadows on) looks from, fitted for a
-// directional light to the bounds of the objects within the shadow distance.
+// Where `light` (shadows on) looks from, fitted for a directional light to
+// the bounds of the objects within the shadow distance; a point light looks
+// through the six faces of a cube.
 std::optional<ShadowView> shadow_view(const Scene& scene, size_t light, const std::vector<ObjectState>& objects,
                                       const glm::vec3& camera_position);
 
@@ -48,14 +55,15 @@ bool samples_shadow_map(const std::vector<std::string>& keywords);
 // The shadow keywords a pass with this light asks for ({} without shadows).
 std::vector<std::string> shadow_keywords(const SceneLight& light);
 
-// The ShadowCaster draws (SHADOWS_DEPTH, with `light`) of the objects that
-// `include` takes; those without such a pass are listed in out.skipped as
-// not in `target` ("the camera depth texture").
+// The ShadowCaster draws (`keyword`: SHADOWS_DEPTH, or SHADOWS_CUBE for a
+// point light's cube; with `light`) of the objects that `include` takes;
+// those without such a pass are listed in out.skipped as not in `target`
+// ("the camera depth texture").
 Result<DrawListResult, RenderError> caster_draws(const Context& context, const Scene& scene,
                                                 std::vector<ObjectState>& objects, const LightValues& light,
                                                 const std::function<bool(const ObjectState&)>& include,
                                                 const std::string& light_text, const std::string& target,
-                                                ShaderLibrary& library);
+                                                const std::string& keyword, ShaderLibrary& library);
 
 // The ShadowCaster draws of `objects` into the map of `view`: every object
 // whose shader has a ShadowCaster pass and whose bounds reach the light's

@@ -1,9 +1,12 @@
-// Shadow maps on lavapipe: a shadowed light renders one depth map from the
-// ShadowCaster passes, receivers' variants sample it (SHADOWS_SCREEN,
-// SHADOWS_DEPTH), and nothing of it exists when no light casts shadows.
+// Shadow maps on lavapipe: a shadowed light renders one depth map (a point
+// light one distance cube) from the ShadowCaster passes, receivers' variants
+// sample it (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE), and nothing of it
+// exists when no light casts shadows.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -164,14 +167,63 @@ TEST_F(ShadowsTest, ASpotLightsShadowComesThroughItsForwardAddDraw) {
   EXPECT_LT(std::abs(grey(shadowed, 32, 45) - grey(plain, 32, 45)), 3);
 }
 
-TEST_F(ShadowsTest, PointLightShadowsAreNotRenderedAndTheDrawSaysSo) {
-  RenderedFrame f = render("point", ball_scene(R"([{"type": "point", "position": [0, 2, -1], "range": 6,
-                                                   "shadows": "hard"}])"));
-  EXPECT_EQ(f.stats.shadow_maps, 0u);
-  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
-              return d.additive && d.why.find("point-light shadows are not rendered") != std::string::npos;
-            }),
-            2u);
+// A point light at the origin, a ball 1.5 along `axis` and a wall 3 along it
+// facing the light, seen from beside the light so that the wall's centre is
+// the image's centre: the ball's shadow falls there, through the cube face
+// of `axis`.
+std::string point_light_wall(const std::array<int, 3>& axis, const std::string& rotation, const std::string& shadows) {
+  std::string standard = example_shader("SurfaceStandard.shader");
+  auto at = [&](float t) { return fmt::format("[{}, {}, {}]", axis[0] * t, axis[1] * t, axis[2] * t); };
+  // Beside the light: 2.5 along an axis across `axis`, half a unit back.
+  std::array<int, 3> across = axis[0] != 0 ? std::array<int, 3>{0, 0, 1} : std::array<int, 3>{1, 0, 0};
+  std::string camera = fmt::format("[{}, {}, {}]", 2.5f * across[0] - 0.5f * axis[0], 2.5f * across[1] - 0.5f * axis[1],
+                                   2.5f * across[2] - 0.5f * axis[2]);
+  return R"({"width": 64, "height": 64, "ambient": [0.02, 0.02, 0.02],
+    "camera": {"position": )" + camera + R"(, "look_at": )" + at(3) + R"(, "fov": 50, "clear_color": [0, 0, 0]},
+    "lights": [{"type": "point", "position": [0, 0, 0], "range": 8, "intensity": 3)" + shadows + R"(}],
+    "objects": [
+      {"name": "wall", "mesh": "plane", "position": )" + at(3) + R"(, "rotation": )" + rotation +
+         R"(, "scale": 0.4, "material": {"shader": ")" + standard +
+         R"(", "properties": {"_Color": [0.8, 0.8, 0.8], "_Glossiness": 0}}},
+      {"name": "ball", "mesh": "sphere", "position": )" + at(1.5f) + R"(, "scale": 0.6, "material": {"shader": ")" +
+         standard + R"(", "properties": {"_Color": [0.8, 0.2, 0.2], "_Glossiness": 0}}}]})";
+}
+
+// The Done-when item: from every cube face. Each wall is turned so that its
+// lit side (+Y of the plane) faces the light.
+TEST_F(ShadowsTest, APointLightsShadowDarkensTheWallBehindABallThroughEveryCubeFace) {
+  struct Face {
+    const char* name;
+    std::array<int, 3> axis;
+    const char* rotation;
+  };
+  const Face faces[6] = {{"+X", {1, 0, 0}, "[0, 0, 90]"},  {"-X", {-1, 0, 0}, "[0, 0, -90]"},
+                         {"+Y", {0, 1, 0}, "[180, 0, 0]"}, {"-Y", {0, -1, 0}, "[0, 0, 0]"},
+                         {"+Z", {0, 0, 1}, "[-90, 0, 0]"}, {"-Z", {0, 0, -1}, "[90, 0, 0]"}};
+  for (const Face& face : faces) {
+    std::string name = std::string("point_face_") + (face.name[0] == '+' ? "pos" : "neg") + face.name[1];
+    RenderedFrame plain = render(name + "_plain", point_light_wall(face.axis, face.rotation, ""));
+    RenderedFrame shadowed = render(name, point_light_wall(face.axis, face.rotation, R"(, "shadows": "hard")"));
+    ASSERT_FALSE(shadowed.ldr.empty()) << face.name;
+    EXPECT_EQ(shadowed.stats.shadow_maps, 1u) << face.name << ": one cube";
+    EXPECT_EQ(count_if(shadowed, [](const DrawRecord& d) { return d.additive && has_keyword(d, "SHADOWS_CUBE"); }), 2u)
+        << face.name;
+    // The wall is lit where the ball does not hide it...
+    EXPECT_GT(grey(plain, 32, 32), 60) << face.name << ": the wall faces the light";
+    // ... and dark behind the ball, through this face only.
+    EXPECT_LT(grey(shadowed, 32, 32) + 40, grey(plain, 32, 32)) << face.name;
+    int lit_same = 0, lit_total = 0;
+    for (int y = 0; y < 64; y += 4) {
+      for (int x = 0; x < 64; x += 4) {
+        if (std::abs(x - 32) < 14 && std::abs(y - 32) < 14) continue;  // around the shadow
+        if (grey(plain, x, y) < 30) continue;                            // not the lit wall
+        ++lit_total;
+        lit_same += std::abs(grey(shadowed, x, y) - grey(plain, x, y)) <= 2;
+      }
+    }
+    EXPECT_GT(lit_total, 20) << face.name;
+    EXPECT_EQ(lit_same, lit_total) << face.name << ": the rest of the wall stays lit (no acne, no stray shadow)";
+  }
 }
 
 // Along the column x = 32, count the pixels between shadow and light.
