@@ -21,18 +21,20 @@
 // UNITY_DECLARE_SHADOWMAP, UNITY_SAMPLE_SHADOW(_PROJ): HLSLSupport.cginc.
 
 // ---- shadows ------------------------------------------------------------------------
-// SHADOW_COORDS adds the light-space coordinate; TRANSFER_SHADOW fills it from
-// `v.vertex` (the vertex input must be called v, as in Unity); the
-// attenuation macros read it (UNITY_SHADOW_ATTENUATION's world position is
-// unused, as in Unity when the coordinate is interpolated).
+// SHADOW_COORDS adds the interpolated world position (facet looks the map
+// up per pixel, where Unity's screen-space pass would: a directional
+// light's cascade depends on the pixel's distance from the camera);
+// TRANSFER_SHADOW fills it from `v.vertex` (the vertex input must be called
+// v, as in Unity); the attenuation macros read it (UNITY_SHADOW_ATTENUATION
+// takes the world position it is given).
 #if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
 #define SHADOW_COORDS(idx1) float4 _ShadowCoord : TEXCOORD##idx1;
 #define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
-#define TRANSFER_SHADOW(a) a._ShadowCoord = FacetShadowCoord(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz);
+#define TRANSFER_SHADOW(a) a._ShadowCoord = float4(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz, 1.0);
 #define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
-#define SHADOW_ATTENUATION(a) FacetSampleShadow(a._ShadowCoord)
-#define UNITY_SHADOW_ATTENUATION(a, worldPos) SHADOW_ATTENUATION(a)
-#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = FacetShadowCoord(wpos);
+#define SHADOW_ATTENUATION(a) FacetShadowAtWorld(a._ShadowCoord.xyz)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) FacetShadowAtWorld(worldPos)
+#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) a._ShadowCoord = float4(wpos, 1.0);
 #elif defined(SHADOWS_CUBE)
 // The vector from the light to the vertex, as Unity's cube form keeps it.
 #define SHADOW_COORDS(idx1) float3 _ShadowCoord : TEXCOORD##idx1;
@@ -55,17 +57,17 @@
 #define READ_SHADOW_COORDS(a) a._ShadowCoord
 #define UNITY_READ_SHADOW_COORDS(input) READ_SHADOW_COORDS(input)
 
-// Realtime shadow at a world position (the light's shadow map through
-// unity_WorldToShadow[0]; screenPos is unused: there are no screen-space
-// shadows), mixed with baked occlusion and faded with distance as Unity's
-// forward path does.
+// Realtime shadow at a world position (the light's shadow map, or its
+// cascade, through unity_WorldToShadow; screenPos is unused: there are no
+// screen-space shadows), mixed with baked occlusion and faded with distance
+// as Unity's forward path does.
 half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos)
 {
     float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
     half fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
     half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
 #if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
-    half realtime = FacetSampleShadow(FacetShadowCoord(worldPos));
+    half realtime = FacetShadowAtWorld(worldPos);
 #elif defined(SHADOWS_CUBE)
     half realtime = FacetSampleShadowCube(worldPos - _LightPositionRange.xyz);
 #else

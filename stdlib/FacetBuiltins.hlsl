@@ -62,7 +62,8 @@ cbuffer FacetPerLight : register(b0, space1)
     float4 _LightShadowData;            // x = shadow strength complement (1 - strength)
     float4x4 unity_WorldToShadow[4];
     float4 unity_LightShadowBias;       // ShadowCaster: x = depth bias (clip space), y = 1 to clamp to the near plane, z = normal offset (world units)
-    float4 _ShadowMapTexture_TexelSize; // (1/size, 1/size, size, size) of the light's shadow map
+    float4 _ShadowMapTexture_TexelSize; // (1/width, 1/height, width, height) of the light's shadow map
+    float4 _FacetShadowCascades;        // a directional light's cascades: (count, atlas columns, atlas rows, 0)
 };
 sampler2D _LightTexture0 : register(s1, space1);          // light cookie: SPOT and DIRECTIONAL_COOKIE multiply by its alpha
 // binding 2: sampler2D _ShadowMapTexture, the light's shadow map: declared by

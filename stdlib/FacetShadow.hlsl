@@ -73,26 +73,46 @@ float FacetShadowCompare(float2 uv, float depth)
     return tex2Dlod(_ShadowMapTexture, float4(uv, 0.0, 0.0)).r >= depth ? 1.0 : 0.0;
 }
 
-// The light's visibility at a shadow coordinate: 1 lit, _LightShadowData.x
-// fully shadowed; outside the map, and beyond its far plane, lit.
-float FacetSampleShadow(float4 shadowCoord)
+// The light's visibility at a shadow coordinate whose map covers `region`
+// of the texture (min uv, max uv: a cascade's square of the atlas): 1 lit,
+// _LightShadowData.x fully shadowed; outside the region, and beyond its far
+// plane, lit. Soft shadows' taps stay inside the region.
+float FacetSampleShadowIn(float4 shadowCoord, float4 region)
 {
     float3 c = shadowCoord.xyz / max(shadowCoord.w, 1e-6);
-    if (shadowCoord.w <= 0.0 || any(c.xy < 0.0) || any(c.xy > 1.0) || c.z > 1.0) return 1.0;
+    if (shadowCoord.w <= 0.0 || any(c.xy < region.xy) || any(c.xy > region.zw) || c.z > 1.0) return 1.0;
     float lit = 0.0;
     if (_LightShadowData.y > 0.5) {
         float2 texel = _ShadowMapTexture_TexelSize.xy;
         for (int y = -1; y <= 1; ++y)
             for (int x = -1; x <= 1; ++x)
-                lit += FacetShadowCompare(c.xy + float2(x, y) * texel, c.z);
+                lit += FacetShadowCompare(clamp(c.xy + float2(x, y) * texel, region.xy + 0.5 * texel, region.zw - 0.5 * texel), c.z);
         lit /= 9.0;
     } else {
         lit = FacetShadowCompare(c.xy, c.z);
     }
     return lerp(_LightShadowData.x, 1.0, lit);
 }
+float FacetSampleShadow(float4 shadowCoord) { return FacetSampleShadowIn(shadowCoord, float4(0.0, 0.0, 1.0, 1.0)); }
 
+// The light's visibility at a world position: for a directional light with
+// cascades, the cascade whose slice of the view (_LightSplitsNear ..
+// _LightSplitsFar, distances along the camera's forward) holds it, as
+// Unity's getCascadeWeights picks it; beyond the last cascade, lit. Without
+// cascades the one map (unity_WorldToShadow[0]) covers everything.
+float FacetShadowAtWorld(float3 worldPos)
+{
+    float z = dot(_WorldSpaceCameraPos - worldPos, unity_MatrixV[2].xyz);
+    float4 weights = float4(z >= _LightSplitsNear) * float4(z < _LightSplitsFar);
+    if (dot(weights, float4(1.0, 1.0, 1.0, 1.0)) <= 0.0) return 1.0;
+    int cascade = weights.y > 0.0 ? 1 : (weights.z > 0.0 ? 2 : (weights.w > 0.0 ? 3 : 0));
+    float2 cells = max(_FacetShadowCascades.yz, float2(1.0, 1.0));
+    float2 origin = float2(cascade % 2, cascade / 2) / cells;
+    float4 region = cells.x > 1.0 ? float4(origin, origin + 1.0 / cells) : float4(0.0, 0.0, 1.0, 1.0);
+    return FacetSampleShadowIn(mul(unity_WorldToShadow[cascade], float4(worldPos, 1.0)), region);
+}
 #endif
+
 float4 FacetShadowCoord(float3 worldPos) { return mul(unity_WorldToShadow[0], float4(worldPos, 1.0)); }
 
 #endif // FACET_SHADOW_INCLUDED

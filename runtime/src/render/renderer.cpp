@@ -670,7 +670,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   LightSetup lights = setup_lights(scene, camera.view, environment->ambient);
   std::vector<ShadowView> shadow_views;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    if (std::optional<ShadowView> v = shadow_view(scene, i, objects, camera.position)) {
+    if (std::optional<ShadowView> v = shadow_view(scene, i, objects, camera, float(frame.width) / float(frame.height))) {
       add_shadow_values(lights.lights[i], scene.lights[i], *v, scene.shadow_resolution);
       shadow_views.push_back(*v);
     }

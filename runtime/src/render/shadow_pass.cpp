@@ -200,6 +200,40 @@ UniformValues light_frame(const Scene& scene, const ShadowView& view, const Came
   return frame_uniforms(seen_from_light, camera, int(size), int(size), ambient_sh(scene));
 }
 
+// One entry a cascade: the first makes the atlas and begins its render
+// pass, the others draw into their squares of it in the same pass.
+Result<void, RenderError> prepare_cascades(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
+                                           const LightValues* light, const ShadowView& view, ShaderLibrary& library,
+                                           VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+  FACET_TRY(ensure_render_pass(context.device(), out));
+  for (size_t c = 0; c < view.cascades.size(); ++c) {
+    const ShadowCascade& cascade = view.cascades[c];
+    auto map = std::make_unique<ShadowMap>();
+    map->view = view;
+    map->view.camera = cascade.camera;
+    map->view.lens = cascade.lens;
+    map->view.caster_bias = cascade.caster_bias;
+    map->light = light;
+    map->width = view.width;
+    map->height = view.height;
+    map->area = {{int32_t(cascade.x), int32_t(cascade.y)}, {cascade.size, cascade.size}};
+    map->continues = c > 0;
+    map->caster_light = std::make_unique<LightValues>(*light);
+    map->caster_light->source = light;
+    const glm::vec4& bias = cascade.caster_bias;
+    map->caster_light->values.set_vector("unity_LightShadowBias", bias.x, bias.y, bias.z, 0);
+    Result<DrawListResult, RenderError> casters =
+        build_caster_draws(context, scene, objects, *map->caster_light, map->view, library);
+    if (!casters) return unexpected(casters.error());
+    map->casters = std::move(*casters);
+    map->frame = light_frame(scene, map->view, cascade.camera, cascade.size);
+    if (c == 0) FACET_TRY(make_target(context, out.render_pass, *map));
+    FACET_TRY(make_pipelines(context, scene, objects, out.render_pass, cache, *map, pipelines_created));
+    out.maps.push_back(std::move(map));
+  }
+  return {};
+}
+
 // Six entries, one a face, sharing one cube target.
 Result<void, RenderError> prepare_cube(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
                                        const LightValues* light, const ShadowView& view, ShaderLibrary& library,
@@ -261,7 +295,8 @@ bool ShadowPasses::is_cube(const Image* image) const {
 }
 
 size_t ShadowPasses::light_maps() const {
-  return size_t(std::count_if(maps.begin(), maps.end(), [](const auto& m) { return m->light && m->face == 0; }));
+  return size_t(std::count_if(maps.begin(), maps.end(),
+                              [](const auto& m) { return m->light && m->face == 0 && !m->continues; }));
 }
 
 const ShadowMap* ShadowPasses::camera_depth() const {
@@ -282,6 +317,10 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
     if (!light_is_sampled(light, draws)) continue;
     if (!view.faces.empty()) {
       FACET_TRY(prepare_cube(context, scene, objects, light, view, library, cache, out, pipelines_created));
+      continue;
+    }
+    if (!view.cascades.empty()) {
+      FACET_TRY(prepare_cascades(context, scene, objects, light, view, library, cache, out, pipelines_created));
       continue;
     }
     FACET_TRY(ensure_render_pass(context.device(), out));
@@ -322,37 +361,54 @@ Result<void, RenderError> prepare_camera_depth(const Context& context, const Sce
   return {};
 }
 
+namespace {
+
+void begin_pass(VkCommandBuffer commands, const ShadowPasses& passes, const ShadowMap& map) {
+  // A depth map clears its depth (attachment 0); a cube face its distances
+  // (attachment 0, far beyond any range) and its depth (attachment 1).
+  VkClearValue clears[2]{};
+  if (map.cube) {
+    clears[0].color = {{1e30f, 1e30f, 1e30f, 1e30f}};
+    clears[1].depthStencil = {1.0f, 0};
+  } else {
+    clears[0].depthStencil = {1.0f, 0};
+  }
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = map.cube ? passes.cube_pass : passes.render_pass;
+  begin.framebuffer = map.framebuffer;
+  begin.renderArea = {{0, 0}, {map.width, map.height}};
+  begin.clearValueCount = map.cube ? 2 : 1;
+  begin.pClearValues = clears;
+  vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+}
+
+}  // namespace
+
 Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
                                                  const std::vector<ObjectState>& objects, const BindDraw& bind,
                                                  const UniformValues& camera_frame) {
   uint64_t triangles = 0;
+  bool open = false;
   for (const auto& map : passes.maps) {
-    // A depth map clears its depth (attachment 0); a cube face its distances
-    // (attachment 0, far beyond any range) and its depth (attachment 1).
-    VkClearValue clears[2]{};
-    if (map->cube) {
-      clears[0].color = {{1e30f, 1e30f, 1e30f, 1e30f}};
-      clears[1].depthStencil = {1.0f, 0};
-    } else {
-      clears[0].depthStencil = {1.0f, 0};
+    if (!map->continues) {
+      if (open) vkCmdEndRenderPass(commands);
+      begin_pass(commands, passes, *map);
+      open = true;
     }
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = map->cube ? passes.cube_pass : passes.render_pass;
-    begin.framebuffer = map->framebuffer;
-    begin.renderArea = {{0, 0}, {map->width, map->height}};
-    begin.clearValueCount = map->cube ? 2 : 1;
-    begin.pClearValues = clears;
-    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    VkViewport viewport{0, 0, float(map->width), float(map->height), 0, 1};
+    const VkRect2D area = map->area.extent.width ? map->area : VkRect2D{{0, 0}, {map->width, map->height}};
+    VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height),
+                        0, 1};
     vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &begin.renderArea);
-    Result<void, RenderError> bound;
-    for (size_t i = 0; i < map->casters.draws.size() && bound; ++i) {
+    vkCmdSetScissor(commands, 0, 1, &area);
+    for (size_t i = 0; i < map->casters.draws.size(); ++i) {
       const Draw& d = map->casters.draws[i];
       const ObjectState& object = objects[d.object];
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, map->pipelines[i]);
-      bound = bind(commands, d, map->light ? map->frame : camera_frame);
-      if (!bound) break;
+      Result<void, RenderError> bound = bind(commands, d, map->light ? map->frame : camera_frame);
+      if (!bound) {
+        vkCmdEndRenderPass(commands);
+        return unexpected(bound.error());
+      }
       VkBuffer vb = object.mesh->vertices.handle();
       VkDeviceSize offset = 0;
       vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
@@ -360,9 +416,8 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
       vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
       triangles += object.mesh->index_count / 3;
     }
-    vkCmdEndRenderPass(commands);
-    if (!bound) return unexpected(bound.error());
   }
+  if (open) vkCmdEndRenderPass(commands);
   return triangles;
 }
 

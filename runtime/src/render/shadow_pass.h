@@ -45,6 +45,13 @@ struct ShadowMap {
   std::vector<VkPipeline> pipelines;  // per caster draw
   std::shared_ptr<CubeTarget> cube;
   int face = 0;
+  // A cascade: its square of the atlas, and whether it is drawn in the
+  // render pass of the entry before it (the atlas's first cascade owns the
+  // target); its casters see `caster_light`, the light with this cascade's
+  // bias.
+  VkRect2D area{};
+  bool continues = false;
+  std::unique_ptr<LightValues> caster_light;
 };
 
 struct ShadowPasses {

@@ -22,6 +22,18 @@
 
 namespace facet::runtime {
 
+// One cascade of a directional light: a slice of the camera's view
+// (distances near..far along its forward) and the orthographic camera whose
+// map covers it, drawn into `area` of the light's atlas.
+struct ShadowCascade {
+  CameraMatrices camera;
+  SceneCamera lens;
+  glm::mat4 world_to_shadow{1};  // world -> (u, v, depth, w) of the atlas, inside `area`
+  glm::vec4 caster_bias{0};      // unity_LightShadowBias of this cascade's casters
+  float near = 0, far = 0;       // _LightSplitsNear / _LightSplitsFar
+  uint32_t x = 0, y = 0, size = 0;  // the cascade's square in the atlas, texels
+};
+
 // The light's shadow camera and what receivers and casters read of it.
 struct ShadowView {
   size_t light = 0;             // into scene.lights
@@ -37,13 +49,21 @@ struct ShadowView {
   // A point light's six cameras, one a cube face in Vulkan's order (+X, -X,
   // +Y, -Y, +Z, -Z) and orientation; empty for a depth map.
   std::vector<CameraMatrices> faces;
+  // A directional light's 2 or 4 cascades (scene.shadow_cascades); empty
+  // for a single map. The map is then an atlas of `width` x `height` texels.
+  std::vector<ShadowCascade> cascades;
+  uint32_t width = 0, height = 0;  // the map's texels
 };
 
 // Where `light` (shadows on) looks from, fitted for a directional light to
 // the bounds of the objects within the shadow distance; a point light looks
 // through the six faces of a cube.
 std::optional<ShadowView> shadow_view(const Scene& scene, size_t light, const std::vector<ObjectState>& objects,
-                                      const glm::vec3& camera_position);
+                                      const CameraMatrices& camera, float aspect);
+
+// Unity's default cascade splits as fractions of the shadow distance: the
+// far end of every cascade but the last (which ends at the distance).
+std::vector<float> cascade_splits(int cascades);
 
 // Adds the receivers' values (unity_WorldToShadow[0], _LightShadowData,
 // _ShadowMapTexture_TexelSize) and the casters' unity_LightShadowBias.

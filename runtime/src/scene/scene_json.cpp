@@ -470,7 +470,8 @@ struct Reader {
 
   Scene scene(const json& j) const {
     check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
-                       "pixel_light_count", "post", "shadow_resolution", "shadow_distance", "environment"});
+                       "pixel_light_count", "post", "shadow_resolution", "shadow_distance", "shadow_cascades",
+                       "environment"});
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
@@ -503,6 +504,10 @@ struct Reader {
       s.shadow_resolution = integer(member(j, "shadow_resolution"), "shadow_resolution", 16, 8192);
     }
     if (j.contains("shadow_distance")) s.shadow_distance = positive(member(j, "shadow_distance"), "shadow_distance");
+    if (j.contains("shadow_cascades")) {
+      s.shadow_cascades = integer(member(j, "shadow_cascades"), "shadow_cascades", 1, 4);
+      if (s.shadow_cascades == 3) throw Bad{"shadow_cascades", "expected 1, 2 or 4 (Unity's cascade counts)"};
+    }
     if (j.contains("post")) {
       const json& post = member(j, "post");
       if (!post.is_array()) throw Bad{"post", "expected a list of image effects"};

@@ -176,6 +176,7 @@ struct Scene {
   int pixel_light_count = 4;        // Unity's default pixel light limit
   int shadow_resolution = 1024;     // texels per side of each shadow map
   float shadow_distance = 50;       // directional shadows cover what lies this close to the camera
+  int shadow_cascades = 1;          // 1, 2 or 4: a directional light's map split along the view (Unity's splits)
   std::vector<ScenePostEffect> post;  // image effects, in order, before tone mapping
 };
 
