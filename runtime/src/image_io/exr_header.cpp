@@ -46,6 +46,76 @@ std::optional<std::string> data_window_problem(std::istream& file, const ImageLi
   return std::nullopt;
 }
 
+// The size OpenEXR reads for a value of `type` whatever the header declares
+// (its readValueFrom reads these types by their own layout), or nullopt for
+// types whose reader follows the declared size.
+std::optional<int64_t> fixed_size(const std::string& type) {
+  static const std::pair<const char*, int64_t> kSizes[] = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1}, {"float", 4},  {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},  {"m33d", 72},  {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8},         {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},   {"v3f", 12},   {"v3d", 24},            {"deepImageState", 1}};
+  for (const auto& [name, size] : kSizes) {
+    if (type == name) return size;
+  }
+  return std::nullopt;
+}
+
+// The bytes a channel list takes as OpenEXR reads it: entries (a name, then
+// 16 bytes) up to an empty name, whatever size the header declared.
+std::optional<int64_t> channel_list_size(std::istream& file, size_t max_name, int64_t declared) {
+  const std::streamoff start = file.tellg();
+  int64_t used = 0;
+  for (;;) {
+    std::optional<std::string> name = read_name(file, max_name);
+    if (!name) return std::nullopt;
+    used += int64_t(name->size()) + 1;
+    if (name->empty() || used > declared) break;
+    file.seekg(16, std::ios::cur);
+    used += 16;
+  }
+  file.clear();
+  file.seekg(start);
+  return used;
+}
+
+// A preview image: width and height, then width x height RGBA bytes, which
+// OpenEXR allocates from the two numbers alone.
+std::optional<int64_t> preview_size(std::istream& file) {
+  const std::streamoff start = file.tellg();
+  std::optional<uint32_t> w = read_u32(file), h = read_u32(file);
+  file.clear();
+  file.seekg(start);
+  if (!w || !h) return std::nullopt;
+  return 8 + int64_t(*w) * int64_t(*h) * 4;
+}
+
+// Why the value of attribute `name` of `type` does not take the `declared`
+// bytes OpenEXR will read for it (fuzz_image: a channel list declaring 17
+// bytes that holds 19 shifted OpenEXR's reading of the rest of the header
+// away from this walk's, onto a string declaring 1.98 GB).
+std::optional<std::string> layout_problem(std::istream& file, const std::string& name, const std::string& type,
+                                          int64_t declared, size_t max_name) {
+  std::optional<int64_t> takes;
+  if (type == "chlist") {
+    takes = channel_list_size(file, max_name, declared);
+  } else if (type == "preview") {
+    takes = preview_size(file);
+  } else {
+    takes = fixed_size(type);
+  }
+  if (!takes) {
+    if (type == "chlist" || type == "preview") return fmt::format("the EXR attribute '{}' ({}) is cut short", name, type);
+    return std::nullopt;
+  }
+  if (*takes != declared) {
+    return fmt::format("the EXR attribute '{}' declares {} bytes, but OpenEXR reads {} bytes for its {} value", name,
+                       declared, *takes, type);
+  }
+  return std::nullopt;
+}
+
 // A BITMAPINFOHEADER's planes, bits per pixel and compression, read after
 // its height. OpenImageIO 2.4 decodes any pairing and reads far out of
 // bounds on one that BMP does not define (RLE8 at 24 bits, found by
@@ -127,6 +197,7 @@ std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_
       if (declared < 0 || uint64_t(declared) > left) {
         return fmt::format("the EXR attribute '{}' declares {} bytes; the file has {} left", *name, declared, left);
       }
+      if (std::optional<std::string> problem = layout_problem(file, *name, *type, declared, max_name)) return problem;
       if (*name == "dataWindow" && *type == "box2i" && declared == 16) {
         if (std::optional<std::string> problem = data_window_problem(file, limits)) return problem;
         data_window = true;

@@ -19,8 +19,12 @@ bool is_exr(std::istream& file);
 
 // Why the EXR header in `file` (of `file_size` bytes, read from its start)
 // cannot be right, or nullopt when every attribute of every part's header
-// fits in the file: a negative size, a value running past the end, a name
-// without its terminating NUL within OpenEXR's length limit, a
+// fits in the file: a negative size, a value running past the end, a value
+// whose declared size is not what OpenEXR reads for its type (a channel
+// list, a preview image, or a fixed-size type such as box2i: OpenEXR reads
+// those by their own layout, so a wrong size moves its reading of the rest
+// of the header away from this walk's), a name without its terminating NUL
+// within OpenEXR's length limit, a
 // dataWindow that is empty or larger than `limits` (OpenEXR allocates for
 // the data window when the file opens, before any pixel is read), or a
 // header where this walk finds no dataWindow (every header has one: OpenEXR
