@@ -1,10 +1,13 @@
 // Post-processing passes in the style of OnRenderImage/Graphics.Blit:
-// pass 0 greyscale, pass 1 a 9-tap box blur, pass 2 depth visualisation.
+// pass 0 greyscale, pass 1 a 9-tap box blur, pass 2 depth visualisation,
+// pass 3 a vignette with a warm or cool tint (colour grading's simplest form).
 Shader "Hidden/Examples/ImageEffects" {
     Properties {
         _MainTex ("Source", 2D) = "white" {}
         _Amount ("Amount", Range(0, 1)) = 1
         _BlurRadius ("Blur Radius (texels)", Float) = 1
+        _Vignette ("Vignette darkening at the corners", Range(0, 1)) = 0.35
+        _Tint ("Tint", Color) = (1, 1, 1, 1)
     }
     CGINCLUDE
     #include "UnityCG.cginc"
@@ -12,6 +15,8 @@ Shader "Hidden/Examples/ImageEffects" {
     float4 _MainTex_TexelSize;
     float _Amount;
     float _BlurRadius;
+    float _Vignette;
+    float4 _Tint;
 
     struct v2f {
         float4 pos : SV_POSITION;
@@ -64,6 +69,20 @@ Shader "Hidden/Examples/ImageEffects" {
             fixed4 frag(v2f i) : SV_Target {
                 float depth = Linear01Depth(UNITY_SAMPLE_DEPTH(tex2D(_CameraDepthTexture, i.uv)));
                 return fixed4(depth.xxx, 1);
+            }
+            ENDCG
+        }
+        Pass {
+            Name "VIGNETTE"
+            CGPROGRAM
+            #pragma vertex vert_img_fullscreen
+            #pragma fragment frag
+            float4 frag(v2f i) : SV_Target {
+                float4 c = tex2D(_MainTex, i.uv);
+                // 1 at the centre, 1 - _Vignette at the corners, smooth in between.
+                float2 d = (i.uv - 0.5) * 2.0;
+                float fall = saturate(dot(d, d) * 0.5);
+                return float4(c.rgb * _Tint.rgb * (1.0 - _Vignette * fall * fall), c.a);
             }
             ENDCG
         }
