@@ -321,8 +321,9 @@ bool without_throwing(GlslangOutput& out, std::string_view root_name, std::strin
 }
 
 // An HLSL program as glslang's parser takes it: preprocessed, facet's
-// pragmas blanked, member dots closed up and matrix swizzles rewritten
-// again (a macro may build one: "input.a" with a = _22_23_24). nullopt, with
+// pragmas blanked, member dots closed up, matrix swizzles rewritten
+// again (a macro may build one: "input.a" with a = _22_23_24) and scalar
+// swizzles dropped (hlsl_rewrite.h). nullopt, with
 // the log in `out`, when preprocessing fails.
 std::optional<std::string> preprocessed_hlsl(const AssembledSource& source, ir::ProgramLanguage language, Stage stage,
                                              const BackendOptions& options, FileIncluder& includer,
@@ -332,7 +333,8 @@ std::optional<std::string> preprocessed_hlsl(const AssembledSource& source, ir::
     out.parse_log = std::move(preprocessed.parse_log);
     return std::nullopt;
   }
-  return rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed)));
+  return drop_scalar_swizzles(
+      rewrite_matrix_swizzles(without_spaced_member_dots(without_unity_pragmas(preprocessed.preprocessed))));
 }
 
 // True, with the error in `out`, when `text` holds a declaration glslang's

@@ -2,6 +2,7 @@
 #include "facet/support/text.h"
 
 #include <algorithm>
+#include <cctype>
 #include <optional>
 #include <vector>
 
@@ -257,6 +258,100 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
     out += '\n';
     line_begin = line_end + 1;
   }
+  return out;
+}
+
+namespace {
+
+constexpr std::string_view kScalarBases[] = {"float", "half", "fixed", "int", "uint", "bool", "double",
+                                             "min16float", "min10float", "min16int", "min12int", "min16uint"};
+
+// "float", "half1", "min16float1": a scalar or a one-component vector, which
+// glslang makes a scalar.
+bool is_scalar_type(std::string_view word) {
+  for (std::string_view base : kScalarBases) {
+    if (word == base) return true;
+    if (word.size() == base.size() + 1 && word.starts_with(base) && word.back() == '1') return true;
+  }
+  return false;
+}
+
+bool is_one_vector_type(std::string_view word) { return is_scalar_type(word) && word.back() == '1'; }
+
+// Words of `text` with their offsets, comments and strings skipped.
+struct Word {
+  std::string_view text;
+  size_t at;
+};
+
+std::vector<Word> words_of(std::string_view text) {
+  std::vector<Word> out;
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i], next = i + 1 < text.size() ? text[i + 1] : '\0';
+    if (c == '/' && next == '/') {
+      size_t end = text.find('\n', i);
+      i = end == std::string_view::npos ? text.size() : end;
+    } else if (c == '/' && next == '*') {
+      size_t end = text.find("*/", i + 2);
+      i = end == std::string_view::npos ? text.size() : end + 2;
+    } else if (c == '"') {
+      for (++i; i < text.size() && text[i] != '"' && text[i] != '\n'; ++i) i += text[i] == '\\';
+      ++i;
+    } else if (is_ident(c)) {
+      size_t start = i;
+      while (i < text.size() && is_ident(text[i])) ++i;
+      out.push_back({text.substr(start, i - start), start});
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
+// The character after `at` skipping blanks, or '\0'.
+char next_char(std::string_view text, size_t at) {
+  while (at < text.size() && (text[at] == ' ' || text[at] == '\t' || text[at] == '\n' || text[at] == '\r')) ++at;
+  return at < text.size() ? text[at] : '\0';
+}
+
+}  // namespace
+
+std::string drop_scalar_swizzles(std::string_view text) {
+  std::vector<Word> words = words_of(text);
+  // Names declared as a one-component vector somewhere, and names declared
+  // with any other type (a declaration: TYPE NAME followed by ; : , = ) [).
+  std::vector<std::string_view> one_vectors, others;
+  for (size_t k = 0; k + 1 < words.size(); ++k) {
+    const Word& type = words[k];
+    const Word& name = words[k + 1];
+    if (std::isdigit(static_cast<unsigned char>(name.text[0]))) continue;
+    if (text.find_first_not_of(" \t\r\n", type.at + type.text.size()) != name.at) continue;  // "TYPE NAME" only
+    char after = next_char(text, name.at + name.text.size());
+    if (std::string_view(";:,=)[").find(after) == std::string_view::npos || after == '\0') continue;
+    (is_one_vector_type(type.text) ? one_vectors : is_scalar_type(type.text) ? one_vectors : others).push_back(name.text);
+  }
+  auto rewritable = [&](std::string_view name) {
+    bool one = false;
+    for (std::string_view n : one_vectors) one = one || (n == name);
+    if (!one) return false;
+    for (std::string_view n : others)
+      if (n == name) return false;
+    return true;
+  };
+  std::string out;
+  out.reserve(text.size());
+  size_t copied = 0;
+  for (const Word& w : words) {
+    const size_t end = w.at + w.text.size();
+    // NAME.x or NAME.r, the swizzle a whole word.
+    if (end + 1 >= text.size() || text[end] != '.' || (text[end + 1] != 'x' && text[end + 1] != 'r')) continue;
+    if (end + 2 < text.size() && is_ident(text[end + 2])) continue;
+    if (!rewritable(w.text)) continue;
+    out.append(text.substr(copied, end - copied));
+    out += "  ";  // the swizzle's two characters, so that columns stay where they were
+    copied = end + 2;
+  }
+  out.append(text.substr(copied));
   return out;
 }
 

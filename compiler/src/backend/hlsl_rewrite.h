@@ -24,6 +24,15 @@ std::string rewrite_matrix_swizzles(std::string_view text);
 // drops the suffix again).
 std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<std::string>& names);
 
+// fxc takes `v.x` of a one-component vector (float1, half1, ...) as an
+// l-value (Unity's UNITY_TRANSFER_FOG writes `o.fogCoord.x` of a float1);
+// glslang makes float1 a scalar and refuses to assign through its swizzle.
+// In a whole program (after preprocessing), `.x` or `.r` after a name that
+// is declared only as a scalar or a one-component vector is blanked out (two
+// spaces: columns stay): the same value, an l-value glslang takes. A name
+// also declared with any other type somewhere keeps its swizzles.
+std::string drop_scalar_swizzles(std::string_view text);
+
 // The suffix rewrite_assigned_uniforms gives a uniform's declaration.
 inline constexpr std::string_view kAssignedUniformSuffix = "_facet_uniform";
 

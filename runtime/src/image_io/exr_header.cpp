@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstdint>
 
 namespace facet::runtime {
 namespace {
@@ -88,7 +89,10 @@ std::optional<int64_t> preview_size(std::istream& file) {
   file.clear();
   file.seekg(start);
   if (!w || !h) return std::nullopt;
-  return 8 + int64_t(*w) * int64_t(*h) * 4;
+  // Up to 2^64 pixels: a count no declared size (an int32) can match.
+  const uint64_t pixels = uint64_t(*w) * uint64_t(*h);
+  if (pixels > uint64_t(INT32_MAX)) return INT64_MAX;
+  return 8 + int64_t(pixels) * 4;
 }
 
 // Why the value of attribute `name` of `type` does not take the `declared`

@@ -141,10 +141,18 @@ UniformValues frame_uniforms(const Scene& scene, const CameraMatrices& cam, int 
   set(u, "unity_FogParams", {fog.density / std::sqrt(std::log(2.0f)), fog.density / std::log(2.0f), -1 / range,
                              fog.end / range});
   set_ambient(u, scene, ambient);
+  // One probe, the environment, for every object: BoxMin.w is Unity's blend
+  // weight of probe 0 (1: probe 1 unused), ProbePosition.w = 0 turns box
+  // projection off. unity_SpecCube1 (bound to the same cube) decodes the
+  // same way, for shaders that sample it whatever the weight.
   set(u, "unity_SpecCube0_HDR", {1, 1, 0, 0});
   set(u, "unity_SpecCube0_BoxMax", {0, 0, 0, 0});
-  set(u, "unity_SpecCube0_BoxMin", {0, 0, 0, 0});
+  set(u, "unity_SpecCube0_BoxMin", {0, 0, 0, 1});
   set(u, "unity_SpecCube0_ProbePosition", {0, 0, 0, 0});
+  set(u, "unity_SpecCube1_HDR", {1, 1, 0, 0});
+  set(u, "unity_SpecCube1_BoxMax", {0, 0, 0, 0});
+  set(u, "unity_SpecCube1_BoxMin", {0, 0, 0, 1});
+  set(u, "unity_SpecCube1_ProbePosition", {0, 0, 0, 0});
   set(u, "unity_ColorSpaceDielectricSpec", {0.04f, 0.04f, 0.04f, 0.96f});
   return u;
 }

@@ -80,3 +80,33 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace facet::backend
+
+namespace facet::backend {
+namespace {
+
+class ScalarSwizzleTest : public testing::TestWithParam<RewriteCase> {};
+
+TEST_P(ScalarSwizzleTest, SwizzlesOfOneComponentNamesAreBlankedOthersStay) {
+  EXPECT_EQ(drop_scalar_swizzles(GetParam().input), GetParam().output);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Forms, ScalarSwizzleTest,
+    testing::Values(
+        // Unity's UNITY_FOG_COORDS and UNITY_TRANSFER_FOG, expanded.
+        RewriteCase{"fog_member_written", "struct v2f { float1 fogCoord : TEXCOORD7; }; o.fogCoord.x = f;",
+                    "struct v2f { float1 fogCoord : TEXCOORD7; }; o.fogCoord   = f;"},
+        RewriteCase{"read_and_red", "half1 h; float y = h.r + i.h.x;", "half1 h; float y = h   + i.h  ;"},
+        RewriteCase{"scalar_too", "float s = 1; s.x = 2;", "float s = 1; s   = 2;"},
+        RewriteCase{"wider_swizzle_stays", "float1 a; float2 b = a.xx;", "float1 a; float2 b = a.xx;"},
+        RewriteCase{"declared_wider_elsewhere_stays", "float1 c; float4 c2; struct S { float4 c; }; s.c.x = 1;",
+                    "float1 c; float4 c2; struct S { float4 c; }; s.c.x = 1;"},
+        RewriteCase{"struct_typed_stays", "float1 p; Light p2; struct T { Light p; }; t.p.x = 1;",
+                    "float1 p; Light p2; struct T { Light p; }; t.p.x = 1;"},
+        RewriteCase{"other_names_stay", "float4 v; v.x = 1;", "float4 v; v.x = 1;"},
+        RewriteCase{"comments_and_strings_skip", "float1 f; // f.x\n\"f.x\" f.x",
+                    "float1 f; // f.x\n\"f.x\" f  "}),
+    [](const testing::TestParamInfo<RewriteCase>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace facet::backend

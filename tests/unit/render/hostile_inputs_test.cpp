@@ -412,7 +412,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, HostileExr, ::testing::ValuesIn(kExrCases),
 // entries, not its declared size, so its reading of the header went 2 bytes
 // astray of the header walk's, onto a string declaring 1.98 GB, which it
 // allocated (2.35 GB resident). Values OpenEXR reads by their own layout are
-// checked against their declared sizes now.
+// checked against their declared sizes now. The run after that found that
+// check's own overflow (UBSan): a preview of 2^32 - 1 squared pixels, whose
+// byte count is now computed without overflowing.
 struct FuzzFoundImage {
   const char* file;
   const char* expected;
@@ -447,6 +449,7 @@ INSTANTIATE_TEST_SUITE_P(
                       FuzzFoundImage{"exr-chlist-shorter-than-its-channels.exr",
                                      "the EXR attribute 'channels' declares 17 bytes, but OpenEXR reads 19 bytes for "
                                      "its chlist value"},
+                      FuzzFoundImage{"exr-preview-size-overflows.exr", "the EXR attribute "},
                       FuzzFoundImage{"jpeg-empty-app13.jpg", "the JPEG has an empty APP13 marker"},
                       FuzzFoundImage{"jpeg-app1-without-nul.jpg",
                                      "the JPEG's APP1 marker holds 6 bytes and no NUL-terminated identifier"},
