@@ -446,6 +446,11 @@ struct Recorder {
   Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light) {
     if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
     if (r.set == 1 && r.name == "_LightTexture0" && light.cookie) return cookie_image(light);
+    // Declared outside facet's light set: Unity's own AutoLight.cginc, whose
+    // falloffs are textures (Resources::light_falloff, spot_cone).
+    if (r.set != 1 && (r.name == "_LightTexture0" || r.name == "_LightTextureB0")) {
+      if (std::optional<Result<const Image*, RenderError>> t = unity_light_texture(r.name, light)) return *t;
+    }
     if (r.set == 1 && r.name == "_ShadowMapTexture" && shadows) {
       if (const Image* map = shadows->map_of(&light)) return map;
     }
@@ -461,6 +466,26 @@ struct Recorder {
     Result<const Image*, std::string> f = resources.fallback(r.dim.empty() ? "2D" : r.dim, r.arrayed);
     if (!f) return unexpected(error(fmt::format("resource '{}': {}", r.name, f.error())));
     return *f;
+  }
+
+  // What Unity's AutoLight samples as `name` for `light`: the attenuation
+  // ramp (_LightTextureB0, a point light's _LightTexture0), a spot's cone or
+  // cookie, a directional light's cookie; nullopt for anything else.
+  std::optional<Result<const Image*, RenderError>> unity_light_texture(const std::string& name,
+                                                                       const LightValues& light) {
+    auto made = [&](Result<const Image*, std::string> image) -> Result<const Image*, RenderError> {
+      if (!image) return unexpected(error(fmt::format("resource '{}': {}", name, image.error())));
+      return *image;
+    };
+    if (name == "_LightTextureB0" || light.keyword == "POINT") return made(resources.light_falloff());
+    if (light.cookie) return cookie_image(light);
+    if (light.keyword == "SPOT") {
+      const std::vector<float>* spot = light.values.find("_FacetSpotParams");
+      if (!spot || spot->size() < 2) return std::nullopt;
+      const float cos_outer = (*spot)[0], cos_inner = cos_outer + 1.0f / (*spot)[1];
+      return made(resources.spot_cone(cos_outer, cos_inner));
+    }
+    return std::nullopt;
   }
 
   Result<const Image*, RenderError> cookie_image(const LightValues& light) {
@@ -533,6 +558,11 @@ struct Recorder {
           // Depth is not linearly filterable; a shadow cube's distances must not be blended.
           if ((is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image))) && point_sampler) {
             info.sampler = point_sampler;
+          }
+          if (resources.clamped(*image)) {
+            Result<VkSampler, std::string> clamp = resources.clamp_sampler();
+            if (!clamp) return unexpected(error(clamp.error()));
+            info.sampler = *clamp;
           }
           info.imageView = (*image)->view();
           info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;

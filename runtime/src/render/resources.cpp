@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
@@ -82,6 +83,7 @@ ImageLimits texture_limits(const Context& context) {
 Resources::~Resources() {
   if (sampler_) vkDestroySampler(context_.device(), sampler_, nullptr);
   if (point_sampler_) vkDestroySampler(context_.device(), point_sampler_, nullptr);
+  if (clamp_sampler_) vkDestroySampler(context_.device(), clamp_sampler_, nullptr);
 }
 
 namespace {
@@ -103,6 +105,14 @@ Result<VkSampler, std::string> Resources::point_sampler() {
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   return create_sampler(context_.device(), info, point_sampler_);
+}
+
+Result<VkSampler, std::string> Resources::clamp_sampler() {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  return create_sampler(context_.device(), info, clamp_sampler_);
 }
 
 Result<VkSampler, std::string> Resources::sampler() {
@@ -230,6 +240,54 @@ const std::vector<std::vector<std::byte>>* Resources::pixels_of(const Image* ima
     if (kept(t.get())) return &t->mips;
   if (kept(environment_.get())) return &environment_->mips;
   return nullptr;
+}
+
+Result<const Image*, std::string> Resources::made_texture(std::pair<float, float> key, uint32_t width, uint32_t height,
+                                                          const std::function<float(float, float)>& value) {
+  if (auto it = light_textures_.find(key); it != light_textures_.end()) return &it->second->image;
+  std::vector<float> texels;
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      float v = value((float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height));
+      texels.insert(texels.end(), {v, v, v, v});  // UNITY_ATTEN_CHANNEL may be r or a
+    }
+  }
+  const VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkResultOf<Image> image = create_image(context_, {.width = width, .height = height, .format = format,
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+  if (!image) return unexpected(describe(image.error()));
+  std::vector<std::byte> bytes = encode(texels, format);
+  VkResultOf<void> up = upload_image(context_, *image, {std::span<const std::byte>(bytes)});
+  if (!up) return unexpected(describe(up.error()));
+  auto& slot = light_textures_[key];
+  slot = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), width, height});
+  if (keep_pixels_) slot->mips.push_back(std::move(bytes));
+  return &slot->image;
+}
+
+Result<const Image*, std::string> Resources::light_falloff() {
+  // FacetDistanceAttenuation at d^2 = u: (1 - u^2)^2 / (1 + 25 u), 0 from the range on.
+  return made_texture({0.0f, 0.0f}, 256, 1, [](float u, float) {
+    float window = std::clamp(1.0f - u * u, 0.0f, 1.0f);
+    return window * window / (1.0f + 25.0f * u);
+  });
+}
+
+Result<const Image*, std::string> Resources::spot_cone(float cos_outer, float cos_inner) {
+  // uv - 0.5 = (x, y) / (z 2 tan(outer)): the off-axis tangent is 2 |uv - 0.5| tan(outer).
+  const float tan_outer = std::sqrt(std::max(0.0f, 1.0f - cos_outer * cos_outer)) / std::max(cos_outer, 1e-6f);
+  return made_texture({cos_outer, cos_inner}, 64, 64, [=](float u, float v) {
+    float r = 2.0f * std::hypot(u - 0.5f, v - 0.5f) * tan_outer;
+    float cos_angle = 1.0f / std::sqrt(1.0f + r * r);
+    float t = std::clamp((cos_angle - cos_outer) / std::max(cos_inner - cos_outer, 1e-4f), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+  });
+}
+
+bool Resources::clamped(const Image* image) const {
+  for (const auto& [key, t] : light_textures_)
+    if (&t->image == image) return true;
+  return false;
 }
 
 Result<void, std::string> Resources::load_cookies(const Scene& scene) {

@@ -4,6 +4,7 @@
 // probe (the flat ambient colour or the procedural sky).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -43,8 +44,21 @@ class Resources {
   // Loads every light's cookie before recording; errors name
   // "<scene>: lights[i].cookie".
   Result<void, std::string> load_cookies(const Scene& scene);
+  // The light textures Unity's own AutoLight.cginc samples, where facet's
+  // stdlib computes the same falloffs analytically (FacetLight.hlsl), so
+  // that programs built against Unity's include files light alike:
+  // `falloff` is the attenuation at u = distance^2 / range^2 (Unity's
+  // _LightTextureB0, and a point light's _LightTexture0); `spot_cone` is a
+  // spot light's cookie without a cookie file, the smooth cone between the
+  // outer and inner angles in the projective uv of unity_WorldToLight.
+  // Both are sampled through clamp_sampler (clamped: beyond the range, and
+  // outside the cone, is 0).
+  Result<const Image*, std::string> light_falloff();
+  Result<const Image*, std::string> spot_cone(float cos_outer, float cos_inner);
+  bool clamped(const Image* image) const;
   // Created on first use and kept; an error when the device refuses one.
   Result<VkSampler, std::string> sampler();        // trilinear, repeat
+  Result<VkSampler, std::string> clamp_sampler();  // bilinear, clamp to edge
   Result<VkSampler, std::string> point_sampler();  // nearest, clamp to edge: depth images (shadow maps)
 
   size_t textures_loaded() const { return files_loaded_; }
@@ -58,6 +72,8 @@ class Resources {
   Result<LoadedTexture, std::string> solid(const std::array<float, 4>& rgba, VkImageViewType view, uint32_t layers,
                                            bool srgb);
   Result<LoadedTexture, std::string> load_file(const SceneTexture& ref);
+  Result<const Image*, std::string> made_texture(std::pair<float, float> key, uint32_t width, uint32_t height,
+                                                 const std::function<float(float, float)>& value);
 
   const Context& context_;
   // name, sRGB, alpha from grey, glTF metallic-roughness factors
@@ -65,7 +81,8 @@ class Resources {
       textures_;
   std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
   std::unique_ptr<LoadedTexture> environment_;
-  VkSampler sampler_ = VK_NULL_HANDLE, point_sampler_ = VK_NULL_HANDLE;
+  std::map<std::pair<float, float>, std::unique_ptr<LoadedTexture>> light_textures_;  // (0, 0): the falloff
+  VkSampler sampler_ = VK_NULL_HANDLE, point_sampler_ = VK_NULL_HANDLE, clamp_sampler_ = VK_NULL_HANDLE;
   size_t files_loaded_ = 0;
   bool keep_pixels_ = false;
 };
