@@ -1,5 +1,5 @@
 // facet's indirect light for the Standard path: SH irradiance and the
-// reflection probe unity_SpecCube0 with roughness -> mip. UnityGlobalIllumination.cginc
+// reflection probes unity_SpecCube0 (and 1, blended in) with roughness -> mip. UnityGlobalIllumination.cginc
 // and UnityImageBasedLighting.cginc are thin aliases over these.
 #ifndef FACET_GI_INCLUDED
 #define FACET_GI_INCLUDED
@@ -26,6 +26,15 @@ float3 FacetGlossyEnvironment(float3 dir, float perceptualRoughness, float4 hdr)
 {
     float mip = FacetPerceptualRoughnessToMip(perceptualRoughness);
     float4 rgbm = unity_SpecCube0.SampleLevel(samplerunity_SpecCube0, dir, mip);
+    return FacetDecodeHDR(rgbm, hdr);
+}
+
+// The same from unity_SpecCube1, the probe blended in (sampled with
+// unity_SpecCube0's sampler, as Unity's UNITY_PASS_TEXCUBE_SAMPLER does).
+float3 FacetGlossyEnvironment1(float3 dir, float perceptualRoughness, float4 hdr)
+{
+    float mip = FacetPerceptualRoughnessToMip(perceptualRoughness);
+    float4 rgbm = unity_SpecCube1.SampleLevel(samplerunity_SpecCube0, dir, mip);
     return FacetDecodeHDR(rgbm, hdr);
 }
 

@@ -47,11 +47,27 @@ inline half3 UnityGI_IndirectSpecular(UnityGIInput data, half occlusion, Unity_G
 #ifdef _GLOSSYREFLECTIONS_OFF
     specular = unity_IndirectSpecColor.rgb;
 #else
+    half3 reflected = glossIn.reflUVW;
 #if UNITY_SPECCUBE_BOX_PROJECTION
-    glossIn.reflUVW = BoxProjectedCubemapDirection(glossIn.reflUVW, data.worldPos, data.probePosition[0],
+    glossIn.reflUVW = BoxProjectedCubemapDirection(reflected, data.worldPos, data.probePosition[0],
                                                    data.boxMin[0], data.boxMax[0]);
 #endif
     specular = FacetGlossyEnvironment(glossIn.reflUVW, glossIn.roughness, data.probeHDR[0]);
+#if UNITY_SPECCUBE_BLENDING
+    // boxMin[0].w is probe 0's weight; below 1 the second probe (or the
+    // environment) takes the rest, as Unity's blending does.
+    const float kBlendFactor = 0.99999;
+    float blendLerp = data.boxMin[0].w;
+    if (blendLerp < kBlendFactor) {
+        float3 direction1 = reflected;
+#if UNITY_SPECCUBE_BOX_PROJECTION
+        direction1 = BoxProjectedCubemapDirection(reflected, data.worldPos, data.probePosition[1], data.boxMin[1],
+                                                  data.boxMax[1]);
+#endif
+        half3 specular1 = FacetGlossyEnvironment1(direction1, glossIn.roughness, data.probeHDR[1]);
+        specular = lerp(specular1, specular, blendLerp);
+    }
+#endif
 #endif
     return specular * occlusion;
 }
@@ -85,13 +101,13 @@ inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half s
 inline void FacetSetupGIInputProbes(inout UnityGIInput data)
 {
     data.probeHDR[0] = unity_SpecCube0_HDR;
-    data.probeHDR[1] = unity_SpecCube0_HDR;
+    data.probeHDR[1] = unity_SpecCube1_HDR;
     data.boxMin[0] = unity_SpecCube0_BoxMin;
     data.boxMax[0] = unity_SpecCube0_BoxMax;
     data.probePosition[0] = unity_SpecCube0_ProbePosition;
-    data.boxMin[1] = unity_SpecCube0_BoxMin;
-    data.boxMax[1] = unity_SpecCube0_BoxMax;
-    data.probePosition[1] = unity_SpecCube0_ProbePosition;
+    data.boxMin[1] = unity_SpecCube1_BoxMin;
+    data.boxMax[1] = unity_SpecCube1_BoxMax;
+    data.probePosition[1] = unity_SpecCube1_ProbePosition;
 }
 
 #endif // UNITY_GLOBAL_ILLUMINATION_INCLUDED

@@ -26,13 +26,14 @@
 #define UNITY_HANDLE_CORRECTLY_NEGATIVE_NDOTV 0
 #endif
 
-// Reflection-probe box projection and blending: facet has one probe and box
-// projection follows unity_SpecCube0_ProbePosition.w.
+// Reflection-probe box projection and blending, on as in Unity's tier-3
+// desktop settings: box projection follows each probe's ProbePosition.w,
+// blending unity_SpecCube0_BoxMin.w (1 when an object has one probe).
 #ifndef UNITY_SPECCUBE_BOX_PROJECTION
 #define UNITY_SPECCUBE_BOX_PROJECTION 1
 #endif
 #ifndef UNITY_SPECCUBE_BLENDING
-#define UNITY_SPECCUBE_BLENDING 0
+#define UNITY_SPECCUBE_BLENDING 1
 #endif
 
 // Per-pixel world position in the fragment (needed by box projection and

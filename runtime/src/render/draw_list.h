@@ -2,6 +2,8 @@
 // are drawn with which light and keywords, in which order, and why.
 #pragma once
 
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include <deque>
@@ -16,6 +18,7 @@
 #include "facet/runtime/render_state.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/buffer.h"
+#include "facet/runtime/image.h"
 #include "facet/support/text.h"
 #include "render/frame_values.h"
 #include "render/shaders.h"
@@ -35,6 +38,8 @@ struct ObjectState {
   Material material;
   glm::mat4 model{1};
   UniformValues draw;
+  // The reflection probes' cubes unity_SpecCube0/1 bind (null: the environment).
+  std::array<const Image*, 2> probes{};
   GpuMesh* mesh = nullptr;
   glm::vec3 center{0};
   float radius = 0;

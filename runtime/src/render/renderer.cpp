@@ -20,6 +20,7 @@
 #include "render/capture.h"
 #include "render/draw_list.h"
 #include "render/environment_lighting.h"
+#include "render/probes.h"
 #include "render/grab.h"
 #include "render/post.h"
 #include "render/resources.h"
@@ -455,6 +456,9 @@ struct Recorder {
       if (const Image* map = shadows->map_of(&light)) return map;
     }
     if (r.name == "_CameraDepthTexture" && shadows && shadows->camera_depth()) return &shadows->camera_depth()->depth;
+    if ((r.name == "unity_SpecCube0" || r.name == "unity_SpecCube1") && object.probes[r.name.back() == '1']) {
+      return object.probes[r.name.back() == '1'];
+    }
     if (r.set == 2 && r.dim == "2D" && !r.arrayed) {
       auto it = object.material.textures.find(r.name);
       if (it != object.material.textures.end()) {
@@ -664,6 +668,14 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (options.capture && !scene.post.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
+  // Probes first: each renders the scene (through this function) before
+  // this render takes the shader library.
+  std::vector<CubeMips> probe_cubes;
+  if (!scene.reflection_probes.empty()) {
+    Result<std::vector<CubeMips>, RenderError> cubes = render_probes(context, scene, options);
+    if (!cubes) return unexpected(cubes.error());
+    probe_cubes = std::move(*cubes);
+  }
   std::optional<ShaderLibrary> own_library;
   ShaderLibrary* kept = nullptr;
   uint64_t reloaded = 0;
@@ -691,10 +703,24 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     return unexpected(error("cannot create the environment cube: " + cube.error()));
   }
   UniformValues frame_values = frame_uniforms(scene, camera, frame.width, frame.height, environment->ambient);
+  std::vector<const Image*> probe_images;
+  for (const CubeMips& cube : probe_cubes) {
+    Result<const Image*, std::string> image = resources.add_probe(cube);
+    if (!image) return unexpected(error("cannot create a reflection probe's cube: " + image.error()));
+    probe_images.push_back(*image);
+  }
   std::vector<ObjectState> objects;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     Result<ObjectState, RenderError> o = loader.object(i, camera);
     if (!o) return unexpected(o.error());
+    if (!probe_images.empty()) {
+      ProbeChoice choice = choose_probes(scene, o->center);
+      add_probe_values(o->draw, scene, choice);
+      for (int slot : {0, 1}) {
+        int probe = slot == 0 ? choice.probe0 : choice.probe1;
+        o->probes[size_t(slot)] = probe >= 0 ? probe_images[size_t(probe)] : nullptr;
+      }
+    }
     objects.push_back(std::move(*o));
   }
   LightSetup lights = setup_lights(scene, camera.view, environment->ambient);

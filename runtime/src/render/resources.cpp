@@ -239,6 +239,8 @@ const std::vector<std::vector<std::byte>>* Resources::pixels_of(const Image* ima
   for (const auto& [key, t] : fallbacks_)
     if (kept(t.get())) return &t->mips;
   if (kept(environment_.get())) return &environment_->mips;
+  for (const auto& t : probes_)
+    if (kept(t.get())) return &t->mips;
   return nullptr;
 }
 
@@ -299,20 +301,38 @@ Result<void, std::string> Resources::load_cookies(const Scene& scene) {
   return {};
 }
 
-Result<const Image*, std::string> Resources::environment_cube(const CubeMips& cube) {
+namespace {
+
+Result<LoadedTexture, std::string> upload_cube(const Context& context, const CubeMips& cube, bool keep_pixels) {
   std::vector<std::vector<std::byte>> mips;
   for (const std::vector<float>& level : cube.mips) mips.push_back(encode(level, VK_FORMAT_R16G16B16A16_SFLOAT));
-  VkResultOf<Image> image = create_image(context_, {.width = cube.size, .height = cube.size, .layers = 6,
-                                                    .mips = uint32_t(mips.size()), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                                    .view = VK_IMAGE_VIEW_TYPE_CUBE});
+  VkResultOf<Image> image = create_image(context, {.width = cube.size, .height = cube.size, .layers = 6,
+                                                   .mips = uint32_t(mips.size()), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                   .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                                   .view = VK_IMAGE_VIEW_TYPE_CUBE});
   if (!image) return unexpected(describe(image.error()));
   std::vector<std::span<const std::byte>> spans(mips.begin(), mips.end());
-  VkResultOf<void> up = upload_image(context_, *image, spans);
+  VkResultOf<void> up = upload_image(context, *image, spans);
   if (!up) return unexpected(describe(up.error()));
-  environment_ = std::make_unique<LoadedTexture>(LoadedTexture{std::move(*image), cube.size, cube.size});
-  if (keep_pixels_) environment_->mips = std::move(mips);
+  LoadedTexture made{std::move(*image), cube.size, cube.size};
+  if (keep_pixels) made.mips = std::move(mips);
+  return made;
+}
+
+}  // namespace
+
+Result<const Image*, std::string> Resources::environment_cube(const CubeMips& cube) {
+  Result<LoadedTexture, std::string> made = upload_cube(context_, cube, keep_pixels_);
+  if (!made) return unexpected(made.error());
+  environment_ = std::make_unique<LoadedTexture>(std::move(*made));
   return &environment_->image;
+}
+
+Result<const Image*, std::string> Resources::add_probe(const CubeMips& cube) {
+  Result<LoadedTexture, std::string> made = upload_cube(context_, cube, keep_pixels_);
+  if (!made) return unexpected(made.error());
+  probes_.push_back(std::make_unique<LoadedTexture>(std::move(*made)));
+  return &probes_.back()->image;
 }
 
 }  // namespace facet::runtime

@@ -41,6 +41,8 @@ class Resources {
   // The environment cube of these mips (a reflection probe's chain,
   // environment_lighting), RGBA16F, replacing the flat one.
   Result<const Image*, std::string> environment_cube(const CubeMips& cube);
+  // A reflection probe's cube, kept for the frame (RGBA16F, its mips).
+  Result<const Image*, std::string> add_probe(const CubeMips& cube);
   // Loads every light's cookie before recording; errors name
   // "<scene>: lights[i].cookie".
   Result<void, std::string> load_cookies(const Scene& scene);
@@ -81,6 +83,7 @@ class Resources {
       textures_;
   std::map<std::string, std::unique_ptr<LoadedTexture>> fallbacks_;
   std::unique_ptr<LoadedTexture> environment_;
+  std::vector<std::unique_ptr<LoadedTexture>> probes_;
   std::map<std::pair<float, float>, std::unique_ptr<LoadedTexture>> light_textures_;  // (0, 0): the falloff
   VkSampler sampler_ = VK_NULL_HANDLE, point_sampler_ = VK_NULL_HANDLE, clamp_sampler_ = VK_NULL_HANDLE;
   size_t files_loaded_ = 0;

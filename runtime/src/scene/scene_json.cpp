@@ -456,6 +456,43 @@ struct Reader {
     return e;
   }
 
+  SceneReflectionProbe reflection_probe(const json& j, const std::string& path) const {
+    if (!j.is_object()) throw Bad{path, "expected a reflection probe object"};
+    check_keys(j, path, {"position", "size", "box_projection", "importance", "blend_distance", "intensity", "resolution"});
+    SceneReflectionProbe p;
+    p.json_path = path;
+    auto vec3 = [&](const char* key, Vec3& out, bool positive) {
+      const json& v = member(j, key);
+      const std::string at = join(path, key);
+      if (!v.is_array() || v.size() != 3) throw Bad{at, "expected 3 numbers"};
+      for (size_t i = 0; i < 3; ++i) {
+        out[i] = number(v[i], index(at, i));
+        if (positive && !(out[i] > 0)) throw Bad{index(at, i), "expected a number > 0"};
+      }
+    };
+    if (j.contains("position")) vec3("position", p.position, false);
+    if (j.contains("size")) vec3("size", p.size, true);
+    if (j.contains("box_projection")) {
+      const json& b = member(j, "box_projection");
+      if (!b.is_boolean()) throw Bad{join(path, "box_projection"), "expected true or false"};
+      p.box_projection = b.get<bool>();
+    }
+    if (j.contains("importance")) p.importance = integer(member(j, "importance"), join(path, "importance"), 0, 1000000);
+    if (j.contains("blend_distance")) {
+      p.blend_distance = number(member(j, "blend_distance"), join(path, "blend_distance"));
+      if (!(p.blend_distance >= 0)) throw Bad{join(path, "blend_distance"), "expected a number >= 0"};
+    }
+    if (j.contains("intensity")) {
+      p.intensity = number(member(j, "intensity"), join(path, "intensity"));
+      if (!(p.intensity >= 0)) throw Bad{join(path, "intensity"), "expected a number >= 0"};
+    }
+    if (j.contains("resolution")) {
+      p.resolution = integer(member(j, "resolution"), join(path, "resolution"), 16, 512);
+      if ((p.resolution & (p.resolution - 1)) != 0) throw Bad{join(path, "resolution"), "expected a power of two"};
+    }
+    return p;
+  }
+
   // A material plus the pass to blit with.
   ScenePostEffect post_effect(const json& j, const std::string& path) const {
     check_keys(j, path, {"shader", "properties", "keywords", "pass"});
@@ -471,7 +508,7 @@ struct Reader {
   Scene scene(const json& j) const {
     check_keys(j, "", {"width", "height", "time", "camera", "lights", "objects", "ambient", "fog", "tonemap",
                        "pixel_light_count", "post", "shadow_resolution", "shadow_distance", "shadow_cascades",
-                       "environment"});
+                       "environment", "reflection_probes"});
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
@@ -490,6 +527,14 @@ struct Reader {
     if (j.contains("ambient")) ambient(member(j, "ambient"), s);
     s.ambient_given = j.contains("ambient");
     if (j.contains("environment")) s.environment = environment(member(j, "environment"));
+    if (j.contains("reflection_probes")) {
+      const json& probes = member(j, "reflection_probes");
+      if (!probes.is_array()) throw Bad{"reflection_probes", "expected a list of reflection probes"};
+      if (probes.size() > 16) throw Bad{"reflection_probes", "expected at most 16 probes (each renders the scene six times)"};
+      for (size_t i = 0; i < probes.size(); ++i) {
+        s.reflection_probes.push_back(reflection_probe(probes[i], index("reflection_probes", i)));
+      }
+    }
     if (s.camera.clear_sky && !s.sky && !s.environment) {
       throw Bad{"camera.clear",
                 "\"sky\" needs something to draw: an environment, or ambient as a procedural sky {\"sky\": {...}}"};

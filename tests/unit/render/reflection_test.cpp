@@ -169,6 +169,98 @@ TEST_F(ReflectionTest, TheEnvironmentsShIsTheAmbientUnlessTheSceneGivesOne) {
   EXPECT_LT(dark.b, front.b * 0.5f) << "a given ambient replaces the environment's SH";
 }
 
+std::string unlit_color(const char* name, const std::string& position, const std::string& rotation,
+                        const std::string& scale, const std::string& color) {
+  return fmt::format(R"({{"name": "{}", "mesh": "quad", "position": {}, "rotation": {}, "scale": {},
+      "material": {{"shader": "{}", "properties": {{"_Color": {}}}}}}})",
+                     name, position, rotation, scale, std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Unlit/Color.shader",
+                     color);
+}
+
+// A room 6 wide: red wall at +X, blue at -X, and behind the camera a front
+// wall (at z = -3, facing +Z) yellow for x < 1 and cyan for x > 1; a mirror
+// sphere at (sphere_x, 1, 0); a probe at (0, 1, 0) whose box is the room.
+// The mirror is EnvironmentReflection.shader (the probe read as
+// Unity_GlossyEnvironment reads it), or with `standard` the Standard
+// surface shader's white smooth metal, whose reflection goes through
+// UnityGI_IndirectSpecular: box projection and probe blending.
+std::string probe_room(float sphere_x, const std::string& probes, bool standard = false) {
+  const std::string mirror =
+      standard ? fmt::format(R"({{"shader": "{}", "properties": {{"_Color": [1, 1, 1, 1], "_Glossiness": 1, "_Metallic": 1}}}})",
+                             example_shader("SurfaceStandard.shader"))
+               : fmt::format(R"({{"shader": "{}", "properties": {{"_Roughness": 0}}}})",
+                             example_shader("EnvironmentReflection.shader"));
+  std::string walls = unlit_color("red wall", "[3, 1, 0]", "[0, 90, 0]", "[6, 3, 1]", "[1, 0, 0, 1]") + "," +
+                      unlit_color("blue wall", "[-3, 1, 0]", "[0, -90, 0]", "[6, 3, 1]", "[0, 0, 1, 1]") + "," +
+                      unlit_color("yellow front", "[-1, 1, -3]", "[0, 180, 0]", "[4, 3, 1]", "[1, 1, 0, 1]") + "," +
+                      unlit_color("cyan front", "[2, 1, -3]", "[0, 180, 0]", "[2, 3, 1]", "[0, 1, 1, 1]");
+  return fmt::format(R"({{"width": 48, "height": 48,
+    "camera": {{"position": [{0}, 1, -1.6], "look_at": [{0}, 1, 0], "fov": 30, "clear_color": [0, 0, 0]}},
+    "environment": {{"color": [0.2, 0.2, 0.2]}}, "lights": [], {1}
+    "objects": [{2}, {{"name": "mirror", "mesh": "sphere", "position": [{0}, 1, 0], "scale": 0.8,
+      "material": {3}}}]}})",
+                     sphere_x, probes, walls, mirror);
+}
+
+// The probe sees the room: the mirror's centre reflects what is behind the
+// camera (the front wall), its sides the side walls, where without a probe
+// it reflects the grey environment.
+TEST_F(ReflectionTest, AReflectionProbeCapturesTheRoomTheMirrorReflects) {
+  RenderedFrame none = render("probe_none", probe_room(0, ""));
+  RenderedFrame probed = render(
+      "probe_room", probe_room(0, R"("reflection_probes": [{"position": [0, 1, 0], "size": [6, 3, 6.2], "resolution": 32}],)"));
+  ASSERT_FALSE(probed.hdr.empty());
+  glm::vec3 plain = hdr_at(none, 24, 24), centre = hdr_at(probed, 24, 24);
+  EXPECT_NEAR(plain.r, 0.2f, 0.02f) << "without a probe: the environment";
+  EXPECT_GT(centre.r, 0.7f) << centre.r << " " << centre.g << " " << centre.b << ": the yellow front wall";
+  EXPECT_GT(centre.g, 0.7f);
+  EXPECT_LT(centre.b, 0.2f);
+  glm::vec3 right = hdr_at(probed, 42, 24), left = hdr_at(probed, 6, 24);
+  EXPECT_GT(right.r, 0.6f) << "right rim: the red wall";
+  EXPECT_GT(left.b, 0.6f) << "left rim: the blue wall";
+}
+
+// Box projection: at x = 2 the mirror's centre reflects the front wall at
+// x = 2 (cyan) when the probe projects onto its box, the wall straight
+// ahead of the probe (yellow) when it does not.
+TEST_F(ReflectionTest, BoxProjectionReflectsWhatLiesAheadOfTheObjectNotOfTheProbe) {
+  auto probe = [](bool box) {
+    return fmt::format(
+        R"("reflection_probes": [{{"position": [0, 1, 0], "size": [6, 3, 6.2], "resolution": 32, "box_projection": {}}}],)",
+        box ? "true" : "false");
+  };
+  RenderedFrame flat = render("probe_no_box", probe_room(2, probe(false), true));
+  RenderedFrame boxed = render("probe_box", probe_room(2, probe(true), true));
+  ASSERT_FALSE(boxed.hdr.empty());
+  glm::vec3 f = hdr_at(flat, 24, 24), b = hdr_at(boxed, 24, 24);
+  EXPECT_GT(f.r, 0.7f) << f.r << " " << f.g << " " << f.b << ": yellow without box projection";
+  EXPECT_LT(f.b, 0.2f);
+  EXPECT_LT(b.r, 0.2f) << b.r << " " << b.g << " " << b.b << ": cyan with box projection";
+  EXPECT_GT(b.b, 0.7f);
+}
+
+// An object whose centre is outside every probe's box reflects the
+// environment; 0.5 inside a face of a box with blend distance 1, half the
+// probe and half the environment.
+TEST_F(ReflectionTest, AnObjectReflectsTheProbesHoldingItsCentreFadingOverTheBlendDistance) {
+  auto probe = [](float width) {
+    return fmt::format(
+        R"("reflection_probes": [{{"position": [0, 1, 0], "size": [{}, 3, 6.2], "resolution": 32, "blend_distance": 1}}],)",
+        width);
+  };
+  RenderedFrame outside = render("probe_outside", probe_room(2, probe(3.0f), true));  // the box ends at x = 1.5
+  RenderedFrame inside = render("probe_inside", probe_room(2, probe(6.0f), true));    // 1 inside: weight 1
+  RenderedFrame half = render("probe_half", probe_room(2, probe(5.0f), true));        // 0.5 inside: weight 0.5
+  ASSERT_FALSE(half.hdr.empty());
+  glm::vec3 o = hdr_at(outside, 24, 24), i = hdr_at(inside, 24, 24), h = hdr_at(half, 24, 24);
+  EXPECT_NEAR(o.r, 0.2f, 0.02f) << "outside: the grey environment";
+  EXPECT_NEAR(o.g, 0.2f, 0.02f);
+  EXPECT_GT(i.g, 0.7f) << "inside: the probe (the yellow front wall)";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(h[c], 0.5f * (i[c] + 0.2f), 0.05f) << "channel " << c << ": half probe, half environment";
+  }
+}
+
 TEST_F(ReflectionTest, BadEnvironmentsAreRefusedWithTheirJsonPath) {
   auto error_of = [&](const std::string& name, const std::string& environment) {
     std::string json = R"({"camera": {"position": [0, 0, -4]}, "environment": )" + environment +

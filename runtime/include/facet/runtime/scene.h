@@ -113,6 +113,21 @@ struct SceneEnvironment {
   int resolution = 128;       // texels a side of the cube's faces (a power of two)
 };
 
+// A reflection probe (Unity's ReflectionProbe, rendered once when the scene
+// loads): the scene seen from `position` through six 90-degree faces,
+// GGX-prefiltered as the environment is; objects whose centre lies in its
+// box reflect it (docs/rendering.md, "Reflection probes").
+struct SceneReflectionProbe {
+  std::string json_path;      // "reflection_probes[0]"
+  Vec3 position{0, 0, 0};
+  Vec3 size{10, 10, 10};      // the box, centred on position
+  bool box_projection = false;
+  int importance = 1;
+  float blend_distance = 1;   // world units inside the box over which it fades out
+  float intensity = 1;
+  int resolution = 64;        // texels a side of each face (a power of two)
+};
+
 enum class FogMode { off, linear, exp, exp2 };
 
 struct SceneFog {
@@ -171,6 +186,7 @@ struct Scene {
   std::optional<SceneSky> sky;      // replaces the flat ambient when present
   bool ambient_given = false;       // `ambient` was written (else an environment supplies it)
   std::optional<SceneEnvironment> environment;
+  std::vector<SceneReflectionProbe> reflection_probes;
   SceneFog fog;
   Tonemap tonemap = Tonemap::none;
   int pixel_light_count = 4;        // Unity's default pixel light limit
