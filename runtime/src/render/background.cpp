@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "render/frame_values.h"
 #include "render/post.h"
 
 namespace facet::runtime {
@@ -35,6 +36,13 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
     source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
                                   colour("_Ground", "ground", sky.ground),
                                   {"_Intensity", "ambient.sky.intensity", {sky.intensity}, std::nullopt}};
+    if (std::optional<SkySun> sun = sky_sun(scene)) {
+      source.material.properties.push_back(
+          {"_SunDirection", "ambient.sky.sun", {sun->to_sun.x, sun->to_sun.y, sun->to_sun.z, 0}, std::nullopt});
+      source.material.properties.push_back(
+          {"_SunRadiance", "ambient.sky.sun", {sun->radiance.r, sun->radiance.g, sun->radiance.b, 0}, std::nullopt});
+      source.material.properties.push_back({"_SunCos", "ambient.sky.sun", {sun->cos_radius}, std::nullopt});
+    }
   }
   Result<ShaderAsset*, std::string> shader = library.load(source.material.shader);
   if (!shader) {

@@ -161,13 +161,23 @@ float unity_mip_roughness(float mip, int steps) {
   return std::clamp((1.7f - std::sqrt(std::max(0.0f, 1.7f * 1.7f - 4 * 0.7f * m))) / (2 * 0.7f), 0.0f, 1.0f);
 }
 
-CubeMips cube_from_radiance(const std::function<glm::vec3(const glm::vec3&)>& radiance, uint32_t size) {
+CubeMips cube_from_radiance(const std::function<glm::vec3(const glm::vec3&)>& radiance, uint32_t size,
+                            uint32_t supersample) {
   CubeMips cube{size, {}};
   std::vector<float> level(size_t(size) * size * 6 * 4);
+  const uint32_t n = std::max<uint32_t>(supersample, 1);
   for (int face = 0; face < 6; ++face) {
     for (uint32_t y = 0; y < size; ++y) {
       for (uint32_t x = 0; x < size; ++x) {
-        glm::vec3 c = radiance(cube_direction(face, (float(x) + 0.5f) / float(size), (float(y) + 0.5f) / float(size)));
+        glm::vec3 c(0);
+        for (uint32_t sy = 0; sy < n; ++sy) {
+          for (uint32_t sx = 0; sx < n; ++sx) {
+            const float s = (float(x) + (float(sx) + 0.5f) / float(n)) / float(size);
+            const float t = (float(y) + (float(sy) + 0.5f) / float(n)) / float(size);
+            c += radiance(cube_direction(face, s, t));
+          }
+        }
+        c /= float(n * n);
         float* out = &level[((size_t(face) * size + y) * size + x) * 4];
         out[0] = c.r, out[1] = c.g, out[2] = c.b, out[3] = 1;
       }

@@ -63,7 +63,17 @@ Result<EnvironmentLighting, std::string> environment_lighting(const Scene& scene
   }
   if (scene.sky) {
     const SkyRadiance sky = linear_sky(*scene.sky);
-    return from_radiance(scene, [&](const glm::vec3& d) { return sky_radiance(sky, d); }, kSkySize, false);
+    const std::optional<SkySun> sun = sky_sun(scene);
+    if (!sun) return from_radiance(scene, [&](const glm::vec3& d) { return sky_radiance(sky, d); }, kSkySize, false);
+    // The sun's disc is smaller than a texel: each texel averages 8 x 8
+    // directions, so that it keeps about its share of the sun's power.
+    EnvironmentLighting out;
+    out.cube = prefilter_ggx(
+        cube_from_radiance([&](const glm::vec3& d) { return sky_radiance(sky, d) + sun_radiance(*sun, d); }, kSkySize,
+                           8),
+        {});
+    out.ambient = ambient_sh(scene);
+    return out;
   }
   EnvironmentLighting flat;
   const glm::vec3 c = linear_color(scene.ambient);

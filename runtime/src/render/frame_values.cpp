@@ -199,10 +199,26 @@ LightValues light_values(const SceneLight& light) {
   return l;
 }
 
+std::optional<SkySun> sky_sun(const Scene& scene) {
+  if (!scene.sky || !scene.sky->sun) return std::nullopt;
+  const SceneSkySun& sun = *scene.sky->sun;
+  const SceneLight& light = scene.lights[size_t(sun.light)];
+  SkySun out;
+  out.to_sun = -light_values(light).direction;
+  out.radiance = linear_color(light.color) * light.intensity * sun.intensity;
+  out.cos_radius = std::cos(glm::radians(sun.size * 0.5f));
+  return out;
+}
+
 UnitySh ambient_sh(const Scene& scene) {
   if (!scene.sky) return flat_unity_sh(linear_color(scene.ambient));
   SkyRadiance r = linear_sky(*scene.sky);
-  return pack_unity_sh(project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); }));
+  ShCoefficients sky = project_sh([&](const glm::vec3& d) { return sky_radiance(r, d); });
+  if (std::optional<SkySun> sun = sky_sun(scene)) {
+    ShCoefficients disc = sun_sh(*sun);
+    for (size_t i = 0; i < sky.size(); ++i) sky[i] += disc[i];
+  }
+  return pack_unity_sh(sky);
 }
 
 LightValues forward_base_values(const LightValues& main, const Scene& scene, const UnitySh& ambient,

@@ -68,8 +68,11 @@ LightValues no_light();
 LightValues vertex_light_values(const Scene& scene, const std::vector<size_t>& lights, const glm::mat4& view);
 
 // The scene's ambient as L2 SH in Unity's packing (unity_SHAr...): a flat
-// colour's L0 term, or the projected sky.
+// colour's L0 term, or the projected sky (with its sun's delta).
 UnitySh ambient_sh(const Scene& scene);
+
+// The sky's sun resolved against its light, or nullopt without one.
+std::optional<SkySun> sky_sun(const Scene& scene);
 
 // A ForwardBase draw's light when lights beyond the pixel lights reach the
 // object: `main`'s values plus the four per-vertex point lights `vertex`

@@ -94,6 +94,20 @@ ShCoefficients project_sh(const std::function<glm::vec3(const glm::vec3&)>& radi
   return out;
 }
 
+glm::vec3 sun_radiance(const SkySun& sun, const glm::vec3& d) {
+  if (sun.cos_radius >= 1) return glm::vec3(0);
+  const float radius = std::acos(sun.cos_radius);
+  const float angle = std::acos(std::clamp(glm::dot(glm::normalize(d), sun.to_sun), -1.0f, 1.0f));
+  const float edge = std::clamp((radius - angle) / (0.1f * radius), 0.0f, 1.0f);
+  return sun.radiance * edge;
+}
+
+ShCoefficients sun_sh(const SkySun& sun) {
+  const double solid_angle = 2 * kPi * (1 - double(sun.cos_radius));
+  // light_sh's delta carries pi x colour: colour = radiance x solid angle / pi.
+  return light_sh(sun.to_sun, sun.radiance * float(solid_angle / kPi));
+}
+
 UnitySh pack_unity_sh(const ShCoefficients& radiance) {
   // Irradiance / pi per band: pi / pi, (2 pi / 3) / pi, (pi / 4) / pi.
   const double band[9] = {1, 2.0 / 3, 2.0 / 3, 2.0 / 3, 0.25, 0.25, 0.25, 0.25, 0.25};

@@ -414,7 +414,7 @@ struct Reader {
     if (!j.contains("sky")) throw Bad{"ambient", "missing key 'sky'"};
     const json& k = member(j, "sky");
     const std::string path = "ambient.sky";
-    check_keys(k, path, {"zenith", "horizon", "ground", "intensity"});
+    check_keys(k, path, {"zenith", "horizon", "ground", "intensity", "sun"});
     SceneSky sky;
     for (auto [key, slot] : {std::pair{"zenith", &sky.zenith}, std::pair{"horizon", &sky.horizon}, std::pair{"ground", &sky.ground}}) {
       if (!k.contains(key)) continue;
@@ -425,7 +425,29 @@ struct Reader {
       sky.intensity = number(member(k, "intensity"), join(path, "intensity"));
       if (sky.intensity < 0) throw Bad{join(path, "intensity"), "expected a number >= 0"};
     }
+    if (k.contains("sun")) sky.sun = sun(member(k, "sun"), join(path, "sun"), s);
     s.sky = sky;
+  }
+
+  SceneSkySun sun(const json& j, const std::string& path, const Scene& s) const {
+    if (!j.is_object()) throw Bad{path, "expected {\"light\": INDEX, \"size\": DEGREES, \"intensity\": N}"};
+    check_keys(j, path, {"light", "size", "intensity"});
+    SceneSkySun sun;
+    if (!j.contains("light")) throw Bad{path, "missing key 'light' (the directional light the sun shines as)"};
+    sun.light = integer(member(j, "light"), join(path, "light"), 0, 1 << 20);
+    if (size_t(sun.light) >= s.lights.size() || s.lights[size_t(sun.light)].type != LightType::directional) {
+      throw Bad{join(path, "light"), fmt::format("expected the index of a directional light (lights[0..{}])",
+                                                  s.lights.empty() ? 0 : s.lights.size() - 1)};
+    }
+    if (j.contains("size")) {
+      sun.size = number(member(j, "size"), join(path, "size"));
+      if (!(sun.size > 0 && sun.size <= 20)) throw Bad{join(path, "size"), "expected degrees in (0, 20]"};
+    }
+    if (j.contains("intensity")) {
+      sun.intensity = number(member(j, "intensity"), join(path, "intensity"));
+      if (!(sun.intensity >= 0)) throw Bad{join(path, "intensity"), "expected a number >= 0"};
+    }
+    return sun;
   }
 
   SceneEnvironment environment(const json& j) const {

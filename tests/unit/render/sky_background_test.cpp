@@ -88,3 +88,42 @@ TEST(SkyBackgroundScene, BadClearSettingsNameTheirJsonPath) {
 
 }  // namespace
 }  // namespace facet::runtime
+
+namespace facet::runtime {
+namespace {
+
+using SkySunTest = test_support::RenderTest;
+
+// A sky with a sun shining as lights[0] (from 40 degrees up, towards +Z):
+// the camera looking at the sun sees its disc, bright beyond the sky's 1;
+// a mirror ball reflects it from the environment cube; facing the sun, the
+// ambient SH is brighter than facing away.
+std::string sun_scene(const std::string& camera, const std::string& objects = "") {
+  return R"({"width": 48, "height": 48,
+    "ambient": {"sky": {"zenith": [0.2, 0.4, 0.9], "horizon": [0.9, 0.8, 0.6], "ground": [0.3, 0.2, 0.1],
+                        "sun": {"light": 0, "size": 4, "intensity": 10}}},
+    "lights": [{"type": "directional", "rotation": [40, 180, 0], "intensity": 1}],
+    "camera": {)" + camera + R"(, "clear": "sky"}, "objects": [)" + objects + "]}";
+}
+
+TEST_F(SkySunTest, TheSunsDiscShowsInTheSkyWhereItsLightComesFrom) {
+  // The light shines along pitch 40, yaw 180: from +Z and above, towards -Z.
+  RenderedFrame f = render("sun_sky", sun_scene(R"("position": [0, 0, 0], "rotation": [-40, 0, 0], "fov": 30)"));
+  ASSERT_FALSE(f.hdr.empty());
+  const float* centre = &f.hdr[(24 * 48 + 24) * 4];
+  const float* beside = &f.hdr[(24 * 48 + 2) * 4];
+  EXPECT_GT(centre[0], 5.0f) << "the disc: the light's colour x intensity 10";
+  EXPECT_LT(beside[0], 1.0f) << "the sky beside it";
+}
+
+TEST(SkySunScene, ASunMustShineAsADirectionalLight) {
+  auto scene = parse_scene(R"({"camera": {}, "objects": [], "lights": [{"type": "point"}],
+    "ambient": {"sky": {"sun": {"light": 0}}}})", "s.json");
+  ASSERT_FALSE(scene);
+  EXPECT_NE(scene.error().message.find("ambient.sky.sun.light: expected the index of a directional light"),
+            std::string::npos)
+      << scene.error().message;
+}
+
+}  // namespace
+}  // namespace facet::runtime

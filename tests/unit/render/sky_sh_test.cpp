@@ -152,3 +152,24 @@ TEST(SkySh, CubeFacesPointAlongTheirAxesAndTheTopFaceCentreIsTheZenith) {
 
 }  // namespace
 }  // namespace facet::runtime
+
+namespace facet::runtime {
+namespace {
+
+// The sun's SH is the delta of its power: facing it, ShadeSH9 gives its
+// irradiance / pi (radiance x solid angle / pi) times L2's 1.0625; facing
+// away, L2's 0.0625 ringing.
+TEST(SkySh, TheSunsShIsTheDeltaOfItsPower) {
+  SkySun sun{.to_sun = glm::normalize(glm::vec3(0, 1, 1)), .radiance = glm::vec3(50), .cos_radius = std::cos(0.02f)};
+  const float solid_angle = 2 * std::numbers::pi_v<float> * (1 - sun.cos_radius);
+  UnitySh sh = pack_unity_sh(sun_sh(sun));
+  const float facing = 50 * solid_angle / std::numbers::pi_v<float>;
+  EXPECT_NEAR(eval_unity_sh(sh, sun.to_sun).r, 1.0625f * facing, 1e-3f * facing);
+  EXPECT_NEAR(eval_unity_sh(sh, -sun.to_sun).r, 0.0f, 0.07f * facing);
+  // The disc itself: full radiance at its centre, none well outside.
+  EXPECT_FLOAT_EQ(sun_radiance(sun, sun.to_sun).r, 50.0f);
+  EXPECT_EQ(sun_radiance(sun, glm::vec3(1, 0, 0)).r, 0.0f);
+}
+
+}  // namespace
+}  // namespace facet::runtime

@@ -30,9 +30,11 @@ inline constexpr int kSpecCubeLodSteps = 6;
 // the root in [0, 1] of r (1.7 - 0.7 r) = mip / steps.
 float unity_mip_roughness(float mip, int steps = kSpecCubeLodSteps);
 
-// Mip 0 by evaluating `radiance` at every texel centre of a `size` cube, then
-// every smaller mip down to 1 texel by a 2x2 box filter.
-CubeMips cube_from_radiance(const std::function<glm::vec3(const glm::vec3&)>& radiance, uint32_t size);
+// Mip 0 by evaluating `radiance` at every texel centre of a `size` cube (or
+// averaging it over `supersample` x `supersample` points spread over each
+// texel), then every smaller mip down to 1 texel by a 2x2 box filter.
+CubeMips cube_from_radiance(const std::function<glm::vec3(const glm::vec3&)>& radiance, uint32_t size,
+                            uint32_t supersample = 1);
 
 // Adds the 2x2 box-filtered mips below mips[0] (whatever mips there were).
 void build_box_mips(CubeMips& cube);

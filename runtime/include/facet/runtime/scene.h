@@ -96,9 +96,19 @@ struct SceneLight {
 // A procedural sky for the ambient light (sRGB-authored colours): radiance
 // horizon -> zenith linearly in the direction's y above the horizon, horizon
 // -> ground linearly in -y below, times intensity (facet/runtime/sky_sh.h).
+// The sky's sun (Unity's procedural skybox's "Sun Source"): a disc in the
+// direction a directional light comes from, its colour, `size` degrees
+// across, radiance the light's linear colour x intensity.
+struct SceneSkySun {
+  int light = 0;           // into scene.lights: a directional light
+  float size = 1.5f;       // angular diameter, degrees
+  float intensity = 20;    // radiance per unit of the light's linear colour x intensity
+};
+
 struct SceneSky {
   Vec3 zenith{0.2f, 0.45f, 0.8f}, horizon{0.75f, 0.8f, 0.85f}, ground{0.3f, 0.27f, 0.22f};
   float intensity = 1;
+  std::optional<SceneSkySun> sun;
 };
 
 // The environment every object reflects (docs/scene-format.md): an

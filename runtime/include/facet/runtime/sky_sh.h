@@ -28,6 +28,19 @@ SkyRadiance linear_sky(const SceneSky& sky);
 // linearly in d.y above the horizon, horizon -> ground linearly in -d.y below.
 glm::vec3 sky_radiance(const SkyRadiance& sky, const glm::vec3& d);
 
+// The sky's sun, resolved against its light: a disc of uniform radiance
+// around `to_sun`, cos_radius the cosine of its angular radius.
+struct SkySun {
+  glm::vec3 to_sun{0, 1, 0};
+  glm::vec3 radiance{0};
+  float cos_radius = 1;
+};
+
+// The sun's radiance towards unit direction d: `radiance` inside the disc,
+// 0 outside, linear across the outer tenth of its radius (so that a cube's
+// supersampling sees a disc, not a step).
+glm::vec3 sun_radiance(const SkySun& sun, const glm::vec3& d);
+
 // Projection coefficients of a radiance function on the real SH basis of
 // bands 0..2, in the order (l, m) = (0,0), (1,-1), (1,0), (1,1), (2,-2),
 // (2,-1), (2,0), (2,1), (2,2), where Y(1,-1) ~ y, Y(1,0) ~ z, Y(1,1) ~ x.
@@ -67,6 +80,11 @@ UnitySh operator+(const UnitySh& a, const UnitySh& b);
 // the L2 truncation (1.0625 * color facing the light, 0.0625 * color at
 // its back), as Unity's SH lights do.
 ShCoefficients light_sh(const glm::vec3& to_light, const glm::vec3& color);
+
+// The sun's projection: a disc so small next to band 2 that it is the
+// delta of its power, radiance x solid angle 2 pi (1 - cos_radius), at
+// to_sun (numerical projection would miss it between nodes).
+ShCoefficients sun_sh(const SkySun& sun);
 
 // The CPU twin of FacetSHEval (clamped at 0 as the shader does).
 glm::vec3 eval_unity_sh(const UnitySh& sh, const glm::vec3& n);
