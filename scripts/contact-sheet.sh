@@ -21,7 +21,7 @@ for scene in "$root"/examples/scenes/*.json; do
   name=$(basename "$scene" .json)
   if ! "$facet" render "$scene" -o "$work/$name.png" >"$work/$name.log" 2>&1; then
     failed+=("$name")
-    sed 's/^/  /' "$work/$name.log" | head -5 >&2
+    head -5 "$work/$name.log" | sed 's/^/  /' >&2
     continue
   fi
   oiiotool "$work/$name.png" --ch R,G,B --fit:pad=1 320x180 -o "$work/tile-$name.png"
@@ -38,7 +38,7 @@ if [[ ${#tiles[@]} -gt 0 ]]; then
   done
   mkdir -p "$(dirname "$out")"
   oiiotool "${tiles[@]}" --mosaic:pad=4 "${columns}x${rows}" -o "$out"
-  legend="${out%.*}.txt"
+  legend="$(dirname "$out")/$(basename "$out" .png).txt"
   for i in "${!names[@]}"; do
     echo "row $((i / columns + 1)), column $((i % columns + 1)): ${names[$i]}"
   done >"$legend"

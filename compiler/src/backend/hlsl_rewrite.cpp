@@ -330,6 +330,18 @@ std::string drop_scalar_swizzles(std::string_view text) {
     if (std::string_view(";:,=)[").find(after) == std::string_view::npos || after == '\0') continue;
     (is_one_vector_type(type.text) ? one_vectors : is_scalar_type(type.text) ? one_vectors : others).push_back(name.text);
   }
+  // A name after ',' (a later declarator of a list, or an argument), '}'
+  // (an instance of a struct) or '>' (vector<float, 4> v) may be anything:
+  // its swizzles stay.
+  for (const Word& w : words) {
+    size_t before = w.at;
+    while (before > 0 && (text[before - 1] == ' ' || text[before - 1] == '\t' || text[before - 1] == '\n' ||
+                          text[before - 1] == '\r'))
+      --before;
+    if (before > 0 && (text[before - 1] == ',' || text[before - 1] == '}' || text[before - 1] == '>')) {
+      others.push_back(w.text);
+    }
+  }
   auto rewritable = [&](std::string_view name) {
     bool one = false;
     for (std::string_view n : one_vectors) one = one || (n == name);

@@ -30,7 +30,10 @@ std::string rewrite_assigned_uniforms(std::string_view text, const std::vector<s
 // In a whole program (after preprocessing), `.x` or `.r` after a name that
 // is declared only as a scalar or a one-component vector is blanked out (two
 // spaces: columns stay): the same value, an l-value glslang takes. A name
-// also declared with any other type somewhere keeps its swizzles.
+// also declared with any other type somewhere, or that follows a ',', '}' or
+// '>' anywhere (a later declarator of a list, an argument, a struct
+// instance, a template type: its type is not known here), keeps its
+// swizzles.
 std::string drop_scalar_swizzles(std::string_view text);
 
 // The suffix rewrite_assigned_uniforms gives a uniform's declaration.

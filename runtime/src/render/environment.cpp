@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <system_error>
 #include <thread>
 
 #include "facet/runtime/sky_sh.h"
@@ -127,12 +128,17 @@ std::vector<float> prefiltered_level(const CubeMips& source, uint32_t size, floa
     for (int face = 0; face < 6; ++face) prefilter_face(source, lobe, size, face, level);
     return level;
   }
-  {
+  int started = 0;
+  try {
     std::vector<std::jthread> faces;
     for (int face = 0; face < 6; ++face) {
       faces.emplace_back([&, face] { prefilter_face(source, lobe, size, face, level); });
+      started = face + 1;
     }
-  }  // joined here, before `level` is returned
+  } catch (const std::system_error&) {
+    // No thread to be had: the faces not started are done here.
+  }  // the started threads are joined here, before `level` is read
+  for (int face = started; face < 6; ++face) prefilter_face(source, lobe, size, face, level);
   return level;
 }
 

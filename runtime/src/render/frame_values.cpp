@@ -202,7 +202,10 @@ LightValues light_values(const SceneLight& light) {
 std::optional<SkySun> sky_sun(const Scene& scene) {
   if (!scene.sky || !scene.sky->sun) return std::nullopt;
   const SceneSkySun& sun = *scene.sky->sun;
+  // The JSON reader checks the index; a Scene built in code may not have.
+  if (sun.light < 0 || size_t(sun.light) >= scene.lights.size()) return std::nullopt;
   const SceneLight& light = scene.lights[size_t(sun.light)];
+  if (light.type != LightType::directional) return std::nullopt;
   SkySun out;
   out.to_sun = -light_values(light).direction;
   out.radiance = linear_color(light.color) * light.intensity * sun.intensity;

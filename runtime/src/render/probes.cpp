@@ -47,6 +47,8 @@ void set_probe(UniformValues& u, const Scene& scene, int probe, int slot, float 
 Result<std::vector<CubeMips>, RenderError> render_probes(Context& context, const Scene& scene,
                                                          const RenderOptions& options) {
   std::vector<CubeMips> cubes;
+  // One library for every face of every probe: each compiles a variant once.
+  const std::shared_ptr<ShaderStore> shaders = options.shaders ? options.shaders : make_shader_store();
   for (const SceneReflectionProbe& probe : scene.reflection_probes) {
     Scene seen = scene;
     seen.reflection_probes.clear();
@@ -60,7 +62,7 @@ Result<std::vector<CubeMips>, RenderError> render_probes(Context& context, const
     RenderOptions face_options;
     face_options.width = face_options.height = probe.resolution;
     face_options.shader_compiler = options.shader_compiler;
-    face_options.shaders = options.shaders;
+    face_options.shaders = shaders;
     face_options.strict_variants = options.strict_variants;
     const uint32_t size = uint32_t(probe.resolution);
     CubeMips cube{size, {std::vector<float>(size_t(size) * size * 6 * 4)}};

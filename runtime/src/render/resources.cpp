@@ -50,7 +50,10 @@ std::vector<std::byte> encode(const std::vector<float>& linear, VkFormat format)
   if (format == VK_FORMAT_R16G16B16A16_SFLOAT) {
     out.resize(linear.size() * 2);
     for (size_t i = 0; i < linear.size(); ++i) {
-      uint16_t h = glm::packHalf1x16(linear[i]);
+      // Half floats end at 65504: an HDR file's unclipped sun would become
+      // inf, and filtering inf next to 0 gives NaN.
+      float v = std::isnan(linear[i]) ? 0.0f : std::clamp(linear[i], -65504.0f, 65504.0f);
+      uint16_t h = glm::packHalf1x16(v);
       std::memcpy(out.data() + 2 * i, &h, 2);
     }
     return out;
@@ -240,6 +243,8 @@ const std::vector<std::vector<std::byte>>* Resources::pixels_of(const Image* ima
     if (kept(t.get())) return &t->mips;
   if (kept(environment_.get())) return &environment_->mips;
   for (const auto& t : probes_)
+    if (kept(t.get())) return &t->mips;
+  for (const auto& [key, t] : light_textures_)
     if (kept(t.get())) return &t->mips;
   return nullptr;
 }

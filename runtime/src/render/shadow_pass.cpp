@@ -17,10 +17,12 @@ RenderError error(std::string message) { return RenderError{std::move(message)};
 Result<VkRenderPass, VkResult> create_pass(VkDevice device, std::span<const VkAttachmentDescription> attachments,
                                           const VkSubpassDescription& subpass, VkPipelineStageFlags written_stages,
                                           VkAccessFlags written_access) {
-  // Before: the last frame's receivers read the map. After: this frame's do.
+  // Before: the last frame's receivers read the map, and the pass before
+  // (another face of the same cube) wrote the attachments this one clears.
+  // After: this frame's receivers read it.
   VkSubpassDependency deps[2]{};
-  deps[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, written_stages, VK_ACCESS_SHADER_READ_BIT,
-             written_access, 0};
+  deps[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | written_stages, written_stages,
+             VK_ACCESS_SHADER_READ_BIT | written_access, written_access, 0};
   deps[1] = {0, VK_SUBPASS_EXTERNAL, written_stages, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, written_access,
              VK_ACCESS_SHADER_READ_BIT, 0};
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
@@ -86,8 +88,10 @@ Result<VkRenderPass, RenderError> make_cube_pass(VkDevice device) {
   subpass.pColorAttachments = &color_ref;
   subpass.pDepthStencilAttachment = &depth_ref;
   Result<VkRenderPass, VkResult> pass =
-      create_pass(device, attachments, subpass, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+      create_pass(device, attachments, subpass,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                      VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
   if (!pass) return unexpected(error("cannot create the shadow-cube render pass: " + vk_result_name(pass.error())));
   return *pass;
 }

@@ -104,6 +104,11 @@ INSTANTIATE_TEST_SUITE_P(
         RewriteCase{"struct_typed_stays", "float1 p; Light p2; struct T { Light p; }; t.p.x = 1;",
                     "float1 p; Light p2; struct T { Light p; }; t.p.x = 1;"},
         RewriteCase{"other_names_stay", "float4 v; v.x = 1;", "float4 v; v.x = 1;"},
+        // Declared as a scalar in one function and as the second of a list in another.
+        RewriteCase{"later_declarator_of_a_list_stays", "float w = 1; return w.x; float4 base, w; base * w.x;",
+                    "float w = 1; return w.x; float4 base, w; base * w.x;"},
+        RewriteCase{"template_typed_stays", "float v; vector<float, 4> v; v.x = 1;",
+                    "float v; vector<float, 4> v; v.x = 1;"},
         RewriteCase{"comments_and_strings_skip", "float1 f; // f.x\n\"f.x\" f.x",
                     "float1 f; // f.x\n\"f.x\" f  "}),
     [](const testing::TestParamInfo<RewriteCase>& info) { return std::string(info.param.name); });
