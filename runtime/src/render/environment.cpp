@@ -222,6 +222,28 @@ CubeMips prefilter_ggx(const CubeMips& source, const PrefilterOptions& options) 
   return out;
 }
 
+glm::vec3 ggx_lobe_reference(const std::function<glm::vec3(const glm::vec3&)>& radiance, const glm::vec3& n,
+                             float roughness, uint32_t height_steps) {
+  const float alpha = roughness * roughness, a2 = alpha * alpha;
+  glm::vec3 up = std::abs(n.y) < 0.999f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  glm::vec3 tx = glm::normalize(glm::cross(up, n)), ty = glm::cross(n, tx);
+  glm::dvec3 sum(0);
+  double weight = 0;
+  for (uint32_t i = 0; i < height_steps; ++i) {
+    for (uint32_t j = 0; j < 64; ++j) {  // a regular grid: no pattern shared with the prefilter's Hammersley points
+      float u = (float(i) + 0.5f) / float(height_steps), phi = 2 * kPi * (float(j) + 0.5f) / 64;
+      float cos_h = std::sqrt((1 - u) / (1 + (a2 - 1) * u)), sin_h = std::sqrt(1 - cos_h * cos_h);
+      glm::vec3 h = tx * (sin_h * std::cos(phi)) + ty * (sin_h * std::sin(phi)) + n * cos_h;
+      glm::vec3 l = 2 * glm::dot(n, h) * h - n;
+      float n_dot_l = glm::dot(n, l);
+      if (n_dot_l <= 0) continue;
+      sum += glm::dvec3(radiance(l)) * double(n_dot_l);
+      weight += n_dot_l;
+    }
+  }
+  return weight > 0 ? glm::vec3(sum / weight) : radiance(n);
+}
+
 glm::vec3 sample_equirect(const Equirect& image, const glm::vec3& direction) {
   glm::vec3 d = glm::normalize(direction);
   float u = 0.5f - std::atan2(d.z, d.x) / (2 * kPi);

@@ -7,14 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "facet/runtime/sky_sh.h"
 
 namespace facet::runtime {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 TEST(Environment, UnityMipRoughnessInvertsUnitysCurve) {
   for (int m = 0; m <= kSpecCubeLodSteps; ++m) {
@@ -46,29 +44,6 @@ glm::vec3 blob(const glm::vec3& d) {
   return glm::vec3(0.05f) + glm::vec3(4, 2, 1) * std::exp(10 * (glm::dot(glm::normalize(d), toward) - 1));
 }
 
-// sum L(l) n.l / sum n.l over GGX-sampled half vectors around n (n = v),
-// L evaluated exactly: the integral the prefiltered texel approximates.
-glm::vec3 reference_lobe(const glm::vec3& n, float roughness, uint32_t count) {
-  const float alpha = roughness * roughness, a2 = alpha * alpha;
-  glm::vec3 up = std::abs(n.y) < 0.999f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  glm::vec3 tx = glm::normalize(glm::cross(up, n)), ty = glm::cross(n, tx);
-  glm::dvec3 sum(0);
-  double weight = 0;
-  for (uint32_t i = 0; i < count; ++i) {
-    for (uint32_t j = 0; j < 64; ++j) {  // a regular grid in (u, phi): no shared pattern with the prefilter's
-      float u = (float(i) + 0.5f) / float(count), phi = 2 * kPi * (float(j) + 0.5f) / 64;
-      float cos_h = std::sqrt((1 - u) / (1 + (a2 - 1) * u)), sin_h = std::sqrt(1 - cos_h * cos_h);
-      glm::vec3 h = tx * (sin_h * std::cos(phi)) + ty * (sin_h * std::sin(phi)) + n * cos_h;
-      glm::vec3 l = 2 * glm::dot(n, h) * h - n;
-      float n_dot_l = glm::dot(n, l);
-      if (n_dot_l <= 0) continue;
-      sum += glm::dvec3(blob(l)) * double(n_dot_l);
-      weight += n_dot_l;
-    }
-  }
-  return glm::vec3(sum / weight);
-}
-
 // Where the lobe's light arrives (the integral above a fifth of the floor's
 // 40-fold), within 5 % of it; in the dim tails, within 1 % of the brightest
 // radiance (the blur of filtered importance sampling leaks a little light).
@@ -85,7 +60,7 @@ TEST(Environment, PrefilteredMipsMatchTheGgxLobeIntegralOfAnAnalyticEnvironment)
       for (uint32_t y : {0u, mip_size / 2}) {
         const uint32_t x = mip_size / 2;
         glm::vec3 n = cube_direction(face, (float(x) + 0.5f) / float(mip_size), (float(y) + 0.5f) / float(mip_size));
-        glm::vec3 want = reference_lobe(n, roughness, 1024);
+        glm::vec3 want = ggx_lobe_reference(blob, n, roughness, 1024);
         const float* got = &probe.mips[size_t(m)][((size_t(face) * mip_size + y) * mip_size + x) * 4];
         for (int c = 0; c < 3; ++c) {
           const double difference = std::abs(got[c] - want[c]);

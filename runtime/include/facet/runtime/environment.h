@@ -57,6 +57,14 @@ struct PrefilterOptions {
 // uniform. Mips after `steps` are box-filtered. Deterministic.
 CubeMips prefilter_ggx(const CubeMips& source, const PrefilterOptions& options);
 
+// The integral a prefiltered texel approximates, by brute force: the n.l
+// weighted mean of `radiance` (evaluated exactly, no cube) over the GGX
+// lobe of `roughness` around n (n = v), on a regular grid of `height_steps`
+// x 64 points in (u, phi) of the GGX sampling. The reference the prefilter
+// is measured against (tests, bench/prefilter_bench.cpp).
+glm::vec3 ggx_lobe_reference(const std::function<glm::vec3(const glm::vec3&)>& radiance, const glm::vec3& n,
+                             float roughness, uint32_t height_steps);
+
 // An equirectangular (latitude-longitude) image as Unity's Skybox/Panoramic
 // reads it: u = 0.5 - atan2(z, x) / 2pi, row 0 looking up (+Y), linear RGB.
 struct Equirect {
