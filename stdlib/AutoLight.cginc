@@ -21,13 +21,25 @@
 // UNITY_DECLARE_SHADOWMAP, UNITY_SAMPLE_SHADOW(_PROJ): HLSLSupport.cginc.
 
 // ---- shadows ------------------------------------------------------------------------
-// SHADOW_COORDS adds the interpolated world position (facet looks the map
-// up per pixel, where Unity's screen-space pass would: a directional
-// light's cascade depends on the pixel's distance from the camera);
-// TRANSFER_SHADOW fills it from `v.vertex` (the vertex input must be called
-// v, as in Unity); the attenuation macros read it (UNITY_SHADOW_ATTENUATION
-// takes the world position it is given).
-#if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
+// SHADOWS_SCREEN (a directional light): as in Unity, the runtime's
+// screen-space pass (Hidden/Internal-ScreenSpaceShadows) has looked the
+// light's map up at every pixel of the camera depth texture; SHADOW_COORDS
+// is the screen position, TRANSFER_SHADOW fills it from the output's `pos`
+// (which must be set before, as in Unity), and the attenuation macros read
+// the mask there (FacetScreenShadow).
+// SHADOWS_DEPTH (a spot light): SHADOW_COORDS adds the interpolated world
+// position, TRANSFER_SHADOW fills it from `v.vertex` (the vertex input must
+// be called v, as in Unity); the attenuation macros look the map up there
+// (UNITY_SHADOW_ATTENUATION takes the world position it is given).
+#if defined(SHADOWS_SCREEN)
+#define SHADOW_COORDS(idx1) float4 _ShadowCoord : TEXCOORD##idx1;
+#define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
+#define TRANSFER_SHADOW(a) a._ShadowCoord = ComputeScreenPos(a.pos);
+#define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
+#define SHADOW_ATTENUATION(a) FacetScreenShadow(a._ShadowCoord)
+#define UNITY_SHADOW_ATTENUATION(a, worldPos) FacetScreenShadow(a._ShadowCoord)
+#define UNITY_TRANSFER_SHADOW_WPOS(a, coord, wpos) TRANSFER_SHADOW(a)
+#elif defined(SHADOWS_DEPTH)
 #define SHADOW_COORDS(idx1) float4 _ShadowCoord : TEXCOORD##idx1;
 #define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
 #define TRANSFER_SHADOW(a) a._ShadowCoord = float4(mul(unity_ObjectToWorld, float4(v.vertex.xyz, 1.0)).xyz, 1.0);
@@ -57,16 +69,18 @@
 #define READ_SHADOW_COORDS(a) a._ShadowCoord
 #define UNITY_READ_SHADOW_COORDS(input) READ_SHADOW_COORDS(input)
 
-// Realtime shadow at a world position (the light's shadow map, or its
-// cascade, through unity_WorldToShadow; screenPos is unused: there are no
-// screen-space shadows), mixed with baked occlusion and faded with distance
-// as Unity's forward path does.
+// Realtime shadow at a world position (SHADOWS_SCREEN: the screen-space
+// mask at screenPos; SHADOWS_DEPTH: the light's map through
+// unity_WorldToShadow; SHADOWS_CUBE: the light's distance cube), mixed
+// with baked occlusion and faded with distance as Unity's forward path does.
 half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos)
 {
     float zDist = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
     half fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, zDist));
     half baked = UnitySampleBakedOcclusion(lightmapUV, worldPos);
-#if defined(SHADOWS_SCREEN) || defined(SHADOWS_DEPTH)
+#if defined(SHADOWS_SCREEN)
+    half realtime = FacetScreenShadow(screenPos);
+#elif defined(SHADOWS_DEPTH)
     half realtime = FacetShadowAtWorld(worldPos);
 #elif defined(SHADOWS_CUBE)
     half realtime = FacetSampleShadowCube(worldPos - _LightPositionRange.xyz);

@@ -1,6 +1,7 @@
-// Shadow-map lookups of the pass's light, as Unity's forward path without
-// screen-space shadows (UNITY_NO_SCREENSPACE_SHADOWS): the runtime renders
-// the light's ShadowCaster depth into _ShadowMapTexture and fills
+// Shadow-map lookups of the pass's light. A directional light's receivers
+// (SHADOWS_SCREEN) read the screen-space pass's mask (FacetScreenShadow);
+// that pass and spot lights' receivers (SHADOWS_DEPTH) look the map up: the
+// runtime renders the light's ShadowCaster depth into _ShadowMapTexture and fills
 //   unity_WorldToShadow[0]: world -> (u, v, depth, w) of that map, depth 0..1
 //     from the light, not reversed (w = 1 for a directional light);
 //   _LightShadowData.x: 1 - shadow strength (the shadowed value);
@@ -110,6 +111,13 @@ float FacetShadowAtWorld(float3 worldPos)
     float2 origin = float2(cascade % 2, cascade / 2) / cells;
     float4 region = cells.x > 1.0 ? float4(origin, origin + 1.0 / cells) : float4(0.0, 0.0, 1.0, 1.0);
     return FacetSampleShadowIn(mul(unity_WorldToShadow[cascade], float4(worldPos, 1.0)), region);
+}
+
+// SHADOWS_SCREEN: _ShadowMapTexture is the screen-space pass's mask of the
+// light's visibility; `screenPos` is ComputeScreenPos of the receiver.
+float FacetScreenShadow(float4 screenPos)
+{
+    return tex2Dlod(_ShadowMapTexture, float4(screenPos.xy / max(screenPos.w, 1e-6), 0.0, 0.0)).r;
 }
 #endif
 

@@ -1,8 +1,10 @@
 // The legacy lighting models for forward vertex/fragment and surface code:
 // SurfaceOutput with Lambert and Blinn-Phong, each in its forward form, its
 // _GI form (fills the UnityGI: SH ambient, no reflection) and the
-// _Deferred/_PrePass forms of the old deferred paths (compile-compatible;
-// facet renders forward). The physically based models are in
+// _Deferred form of the deferred path (the G-buffer; the light pass lights
+// it with the Standard BRDF, as Unity's does) and the _PrePass form of the
+// legacy light pre-pass path (compile-compatible: facet has no pre-pass).
+// The physically based models are in
 // UnityPBSLighting.cginc.
 #ifndef LIGHTING_INCLUDED
 #define LIGHTING_INCLUDED

@@ -1,12 +1,13 @@
 // The deferred light pass helpers of Unity's built-in pipeline: the light
 // volume's vertex program (vert_deferred) and UnityDeferredCalculateLightParams
 // (world position from the camera depth, light direction, attenuation with
-// shadows). facet renders forward only; this keeps deferred light shaders
-// compiling. Differences: the light's falloff is facet's analytic one
-// (FacetDistanceAttenuation over 1/range in _LightPos.w), not Unity's
-// _LightTextureB0 ramp (declared, unused); POINT_COOKIE has no cube cookie;
-// unity_WorldToLight, _LightTexture0 and _ShadowMapTexture are facet's
-// built-ins (FacetBuiltins.hlsl, FacetShadow.hlsl).
+// shadows). facet's deferred path (docs/rendering.md) draws each light as a
+// full-screen quad with _LightAsQuad = 1, the view ray in its normal. The
+// attenuation and shadows are the forward path's own (FacetLight.hlsl,
+// AutoLight.cginc), so that both paths light a surface the same: the
+// light's falloff is facet's analytic one (not Unity's _LightTextureB0
+// ramp, declared, unused); POINT_COOKIE has no cube cookie; _LightColor,
+// _LightDir and _LightPos are set with the light's other values.
 #ifndef UNITY_DEFERRED_LIBRARY_INCLUDED
 #define UNITY_DEFERRED_LIBRARY_INCLUDED
 
@@ -53,10 +54,12 @@ half UnityDeferredSampleShadowMask(float2 uv)
 // `vec`: world position (spot, directional) or light-to-point vector (point).
 half UnityDeferredSampleRealtimeShadow(half fade, float3 vec, float2 uv)
 {
-#if defined(SPOT) && defined(SHADOWS_DEPTH)
-    return UnitySampleShadowmap(mul(unity_WorldToShadow[0], float4(vec, 1)));
-#elif (defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)) && defined(SHADOWS_SCREEN)
-    return UnitySampleShadowmap(mul(unity_WorldToShadow[0], float4(vec, 1)));
+#if defined(SHADOWS_CUBE)
+    return FacetSampleShadowCube(vec);
+#elif defined(SHADOWS_SCREEN)
+    return FacetScreenShadow(float4(uv, 0.0, 1.0));  // the screen-space pass's mask
+#elif defined(SHADOWS_DEPTH)
+    return FacetShadowAtWorld(vec);
 #else
     return 1.0;
 #endif
@@ -78,31 +81,21 @@ void UnityDeferredCalculateLightParams(unity_v2f_deferred i, out float3 outWorld
     float4 viewPos = float4(ray * depth01, 1);
     float3 wpos = mul(unity_CameraToWorld, viewPos).xyz;
     float fadeDist = UnityComputeShadowFadeDistance(wpos, viewPos.z);
-    half3 lightDir = 0;
-    float atten = 0;
-#if defined(SPOT)
-    float3 toLight = _LightPos.xyz - wpos;
-    lightDir = normalize(toLight);
-    float4 uvCookie = mul(unity_WorldToLight, float4(wpos, 1));
-    atten = tex2Dlod(_LightTexture0, float4(uvCookie.xy / uvCookie.w, 0, 0)).w * (uvCookie.w < 0 ? 1.0 : 0.0);
-    atten *= FacetDistanceAttenuation(toLight * sqrt(_LightPos.w));
-    atten *= UnityDeferredComputeShadow(wpos, fadeDist, uv);
-#elif defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
-    lightDir = -_LightDir.xyz;
-    atten = UnityDeferredComputeShadow(wpos, fadeDist, uv);
-#if defined(DIRECTIONAL_COOKIE)
-    atten *= tex2Dlod(_LightTexture0, float4(mul(unity_WorldToLight, float4(wpos, 1)).xy, 0, 0)).w;
+#if defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
+    half3 lightDir = -_LightDir.xyz;
+    float3 shadowVec = wpos;
+#else
+    half3 lightDir = normalize(_LightPos.xyz - wpos);
+#if defined(SHADOWS_CUBE)
+    float3 shadowVec = wpos - _LightPos.xyz;
+#else
+    float3 shadowVec = wpos;
 #endif
-#elif defined(POINT) || defined(POINT_COOKIE)
-    float3 fromLight = wpos - _LightPos.xyz;
-    lightDir = -normalize(fromLight);
-    atten = FacetDistanceAttenuation(fromLight * sqrt(_LightPos.w));
-    atten *= UnityDeferredComputeShadow(fromLight, fadeDist, uv);
 #endif
     outWorldPos = wpos;
     outUV = uv;
     outLightDir = lightDir;
-    outAtten = atten;
+    outAtten = FacetLightAttenuation(wpos) * UnityDeferredComputeShadow(shadowVec, fadeDist, uv);
     outFadeDist = fadeDist;
 }
 

@@ -71,9 +71,10 @@ inline void LightingStandard_GI(SurfaceOutputStandard s, UnityGIInput data, inou
     gi = UnityGlobalIllumination(data, s.Occlusion, s.Normal, g);
 }
 
-// Deferred shading is not a facet path: these write the G-buffer layout
-// Unity uses (albedo + occlusion, specular + smoothness, normal) so that
-// code calling them compiles, and return the emission-only light.
+// The deferred path's G-buffer (UnityGBuffer.cginc's layout: albedo +
+// occlusion, specular + smoothness, normal) and, returned for the light
+// buffer, what the surface gives off by itself: emission and the indirect
+// light of gi (ambient, reflections); the lights come later from the G-buffer.
 inline half4 LightingStandard_Deferred(SurfaceOutputStandard s, float3 viewDir, UnityGI gi, out half4 outGBuffer0,
                                        out half4 outGBuffer1, out half4 outGBuffer2)
 {
@@ -85,7 +86,7 @@ inline half4 LightingStandard_Deferred(SurfaceOutputStandard s, float3 viewDir, 
     outGBuffer0 = half4(s.Albedo, s.Occlusion);
     outGBuffer1 = half4(specColor, s.Smoothness);
     outGBuffer2 = half4(s.Normal * 0.5 + 0.5, 1);
-    return half4(c.rgb, 1);
+    return half4(s.Emission + c.rgb, 1);  // what the surface gives off: emission, ambient, reflections
 }
 
 // ---- StandardSpecular --------------------------------------------------------------------
@@ -119,7 +120,7 @@ inline half4 LightingStandardSpecular_Deferred(SurfaceOutputStandardSpecular s, 
     outGBuffer0 = half4(s.Albedo, s.Occlusion);
     outGBuffer1 = half4(s.Specular, s.Smoothness);
     outGBuffer2 = half4(s.Normal * 0.5 + 0.5, 1);
-    return half4(c.rgb, 1);
+    return half4(s.Emission + c.rgb, 1);  // what the surface gives off: emission, ambient, reflections
 }
 
 #endif // UNITY_PBS_LIGHTING_INCLUDED

@@ -140,6 +140,35 @@ Shader "Standard" {
             ENDCG
         }
 
+        // The deferred path's G-buffer pass: the surface into the G-buffer,
+        // ambient, reflections and emission into the light buffer.
+        Pass {
+            Name "DEFERRED"
+            Tags { "LightMode"="Deferred" }
+
+            CGPROGRAM
+            #pragma target 3.0
+            #pragma exclude_renderers nomrt
+
+            #pragma shader_feature _NORMALMAP
+            #pragma shader_feature _ _ALPHATEST_ON _ALPHABLEND_ON _ALPHAPREMULTIPLY_ON
+            #pragma shader_feature _EMISSION
+            #pragma shader_feature _METALLICGLOSSMAP
+            #pragma shader_feature _ _SMOOTHNESS_TEXTURE_ALBEDO_CHANNEL_A
+            #pragma shader_feature _ _SPECULARHIGHLIGHTS_OFF
+            #pragma shader_feature ___ _DETAIL_MULX2
+            #pragma shader_feature _PARALLAXMAP
+
+            #pragma multi_compile_prepassfinal
+            #pragma multi_compile_instancing
+
+            #pragma vertex vertDeferred
+            #pragma fragment fragDeferred
+            #define UNITY_PASS_DEFERRED
+            #include "UnityStandardCore.cginc"
+            ENDCG
+        }
+
         // Albedo and emission for lightmapping; not drawn in regular rendering.
         Pass {
             Name "META"

@@ -90,8 +90,9 @@ Result<Directive> parse_directive(const ir::Pragma& pragma, Diagnostics& diags) 
     }
     if (value_option(arg, "exclude_path", value)) {
       if (value == "forward") d.exclude_forward = true;
+      else if (value == "deferred") d.exclude_deferred = true;
       else diags.add(DiagId::surface_option_ignored, pragma.span,
-                     fmt::format("'{}' changes nothing: facet renders only the forward path", arg));
+                     fmt::format("'{}' changes nothing: facet has no legacy light pre-pass path", arg));
       continue;
     }
     bool ignored = false;
@@ -116,7 +117,9 @@ Result<Directive> parse_directive(const ir::Pragma& pragma, Diagnostics& diags) 
   // hull and domain stages (docs/surface-shaders.md).
   if (d.tessellated()) d.no_instancing = true;
   if (d.exclude_forward) {
-    diags.add(DiagId::surface_bad_directive, pragma.span, "'exclude_path:forward' leaves no pass to render: facet has only the forward path");
+    diags.add(DiagId::surface_bad_directive, pragma.span,
+              "'exclude_path:forward' is not supported: facet draws transparent objects and forward cameras with "
+              "the forward passes, and a surface shader always has them");
     return failure("no path");
   }
   return d;

@@ -27,6 +27,7 @@ struct Directive {
   bool no_ambient = false, no_fog = false, no_forward_add = false, no_instancing = false;
   bool no_vertex_lights = false;  // novertexlights: ForwardBase without VERTEXLIGHT_ON
   bool exclude_forward = false;
+  bool exclude_deferred = false;  // exclude_path:deferred: no Deferred pass
   SourceSpan span;
 
   bool tessellated() const { return !tessellate_function.empty(); }

@@ -31,6 +31,7 @@ const char* pass_define(GeneratedPass pass) {
   switch (pass) {
     case GeneratedPass::forward_base: return "UNITY_PASS_FORWARDBASE";
     case GeneratedPass::forward_add: return "UNITY_PASS_FORWARDADD";
+    case GeneratedPass::deferred: return "UNITY_PASS_DEFERRED";
     default: return "UNITY_PASS_SHADOWCASTER";
   }
 }
@@ -48,6 +49,9 @@ class Writer {
   bool shadow() const {
     return pass_ == GeneratedPass::shadow_caster || pass_ == GeneratedPass::fallback_shadow_caster;
   }
+  // The deferred pass has no light of its own, no shadow and no fog.
+  bool deferred() const { return pass_ == GeneratedPass::deferred; }
+  bool lit() const { return !shadow() && !deferred(); }
   // The fallback caster is Legacy VertexLit's: no user code runs in it.
   bool runs_user_code() const { return pass_ != GeneratedPass::fallback_shadow_caster; }
   bool runs_surf() const { return !shadow() || (runs_user_code() && !d_.alpha_test_property.empty()); }
@@ -102,8 +106,8 @@ class Writer {
       else line(fmt::format("  {} {} : {};", f.type, member(f), semantic()));
     }
     if (vertex_lights()) line(fmt::format("  float3 vertexLight : {};", semantic()));
-    if (!shadow() && !d_.no_fog) line(fmt::format("  UNITY_FOG_COORDS({})", next_texcoord_++));
-    if (!shadow()) line(fmt::format("  UNITY_SHADOW_COORDS({})", next_texcoord_++));
+    if (lit() && !d_.no_fog) line(fmt::format("  UNITY_FOG_COORDS({})", next_texcoord_++));
+    if (lit()) line(fmt::format("  UNITY_SHADOW_COORDS({})", next_texcoord_++));
     line("};");
   }
 
@@ -161,7 +165,7 @@ class Writer {
            "unity_4LightAtten0, worldPos, worldNormal);");
       line("#endif");
     }
-    if (!shadow()) {
+    if (lit()) {
       line("  TRANSFER_SHADOW(o);");
       if (!d_.no_fog) line("  UNITY_TRANSFER_FOG(o, o.pos);");
     }
@@ -332,12 +336,55 @@ class Writer {
     if (base && has_output("Emission")) line("  c.rgb += o.Emission;");
   }
 
+  // The G-buffer through Lighting<Model>_Deferred, which returns what the
+  // surface gives off by itself (emission and, under
+  // UNITY_LIGHT_FUNCTION_APPLY_INDIRECT, ambient and reflections from
+  // <Model>_GI with a black light) for the light buffer.
+  void deferred_output() {
+    if (tangent_frame()) {
+      line("  float3 worldN = float3(dot(IN.tSpace0.xyz, o.Normal), dot(IN.tSpace1.xyz, o.Normal), "
+           "dot(IN.tSpace2.xyz, o.Normal));");
+      line("  o.Normal = normalize(worldN);");
+    }
+    std::string fn = "Lighting" + d_.model;
+    line("  UnityGI gi;");
+    line("  UNITY_INITIALIZE_OUTPUT(UnityGI, gi);");
+    line("  gi.indirect.diffuse = 0;");
+    line("  gi.indirect.specular = 0;");
+    line("  gi.light.color = 0;");
+    line("  gi.light.dir = half3(0, 1, 0);");
+    if (!d_.no_ambient) {
+      line("  UnityGIInput giInput;");
+      line("  UNITY_INITIALIZE_OUTPUT(UnityGIInput, giInput);");
+      line("  giInput.light = gi.light;");
+      line("  giInput.worldPos = worldPos;");
+      line("  giInput.worldViewDir = worldViewDir;");
+      line("  giInput.atten = 1;");
+      line("  giInput.ambient = 0;");
+      line("  giInput.probeHDR[0] = unity_SpecCube0_HDR;");
+      line(fmt::format("  {}_GI(o, giInput, gi);", fn));
+    }
+    line(s_.lighting == LightingForm::gi
+             ? fmt::format("  outEmission = {}_Deferred(o, gi, outGBuffer0, outGBuffer1, outGBuffer2);", fn)
+             : fmt::format("  outEmission = {}_Deferred(o, worldViewDir, gi, outGBuffer0, outGBuffer1, outGBuffer2);", fn));
+    line("#ifndef UNITY_HDR_ON");
+    line("  outEmission.rgb = exp2(-outEmission.rgb);");
+    line("#endif");
+  }
+
   void fragment_function() {
     bool face = std::any_of(s_.inputs.begin(), s_.inputs.end(),
                             [&](const InputField& f) { return f.kind == InputKind::face && f.used && runs_surf(); });
     // SV_IsFrontFace, not VFACE: glslang makes a DX9 VFACE parameter a plain
     // varying that no vertex stage writes. The Input's VFACE field gets +-1.
-    line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", face ? ", bool frontFacing : SV_IsFrontFace" : ""));
+    std::string front = face ? ", bool frontFacing : SV_IsFrontFace" : "";
+    if (deferred()) {
+      line(fmt::format("void frag_surf(v2f_surf IN{}, out half4 outGBuffer0 : SV_Target0, out half4 outGBuffer1 : "
+                       "SV_Target1, out half4 outGBuffer2 : SV_Target2, out half4 outEmission : SV_Target3) {{",
+                       front));
+    } else {
+      line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", front));
+    }
     if (shadow()) {
       if (runs_surf()) {
         if (caster_world_pos()) {
@@ -357,9 +404,14 @@ class Writer {
     line(tangent_frame() ? "  float3 worldNormal = normalize(float3(IN.tSpace0.z, IN.tSpace1.z, IN.tSpace2.z));"
                          : "  float3 worldNormal = normalize(IN.worldNormal);");
     line("  float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
-    line("  float3 lightDir = normalize(UnityWorldSpaceLightDir(worldPos));");
+    if (!deferred()) line("  float3 lightDir = normalize(UnityWorldSpaceLightDir(worldPos));");
     fill_input();
     run_surf();
+    if (deferred()) {
+      deferred_output();
+      line("}");
+      return;
+    }
     light();
     if (!d_.final_color_function.empty()) line(fmt::format("  {}(surfIN, o, c);", d_.final_color_function));
     if (!d_.no_fog) line("  UNITY_APPLY_FOG(IN.fogCoord, c);");

@@ -9,7 +9,7 @@
 
 namespace facet::surface {
 
-enum class GeneratedPass : uint8_t { forward_base, forward_add, shadow_caster, fallback_shadow_caster };
+enum class GeneratedPass : uint8_t { forward_base, forward_add, deferred, shadow_caster, fallback_shadow_caster };
 
 struct GeneratedCode {
   std::string prologue;  // before the user's code: pass define, includes, INTERNAL_DATA

@@ -96,6 +96,9 @@ std::vector<ir::Pragma> pass_pragmas(const ir::Program& user, GeneratedPass pass
       out.push_back(pragma(d.full_forward_shadows ? "multi_compile_fwdadd_fullshadows" : "multi_compile_fwdadd",
                            shadow_modifier, d.span));
       break;
+    case GeneratedPass::deferred:
+      out.push_back(pragma("multi_compile_prepassfinal", {}, d.span));
+      break;
     default:
       out.push_back(pragma("multi_compile_shadowcaster", {}, d.span));
       break;
@@ -148,9 +151,19 @@ struct PassInfo {
   const char* light_mode;
 };
 
-std::vector<PassInfo> passes_for(const Directive& d, bool has_fallback) {
+// Unity generates a Deferred pass when the lighting model has a
+// Lighting<Model>_Deferred function and the surface is neither blended nor a
+// decal (those draw forward), unless `exclude_path:deferred`.
+bool has_deferred_pass(const Directive& d, const Shape& shape) {
+  bool gi = shape.lighting == LightingForm::gi || shape.lighting == LightingForm::view_gi;
+  return gi && shape.has_deferred_function && !d.exclude_deferred && d.decal == DecalMode::none &&
+         d.alpha == AlphaMode::none;
+}
+
+std::vector<PassInfo> passes_for(const Directive& d, const Shape& shape, bool has_fallback) {
   std::vector<PassInfo> out{{GeneratedPass::forward_base, "FORWARD", "ForwardBase"}};
   if (!d.no_forward_add) out.push_back({GeneratedPass::forward_add, "FORWARD_DELTA", "ForwardAdd"});
+  if (has_deferred_pass(d, shape)) out.push_back({GeneratedPass::deferred, "DEFERRED", "Deferred"});
   if (d.add_shadow) out.push_back({GeneratedPass::shadow_caster, "ShadowCaster", "ShadowCaster"});
   else if (has_fallback) out.push_back({GeneratedPass::fallback_shadow_caster, "ShadowCaster", "ShadowCaster"});
   return out;
@@ -201,7 +214,7 @@ Result<std::vector<ir::Pass>> lower_one(const ir::Shader& shader, const ir::SubS
   }
 
   std::vector<ir::Pass> out;
-  for (const PassInfo& info : passes_for(*directive, first && shader.fallback.has_value())) {
+  for (const PassInfo& info : passes_for(*directive, *shape, first && shader.fallback.has_value())) {
     GeneratedCode code = generate(info.kind, *directive, *shape, output_fields,
                                   [&](const std::string& name) { return declares(user, name); });
     GeneratedFile file = add_generated_file(fmt::format("{} [surface {}{}]", base, info.name, tag), code, sources);

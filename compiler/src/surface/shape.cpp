@@ -72,6 +72,7 @@ bool read_lighting(const ProgramAnalysis& analysis, const Directive& d, Shape& s
   else if (p.size() == 4) s.lighting = LightingForm::light_view_atten;
   else return signature_error(d, diags, fmt::format("'{}' has no lighting-function form", name), forms);
   s.has_gi_function = analysis.find(name + "_GI") != nullptr;
+  s.has_deferred_function = analysis.find(name + "_Deferred") != nullptr;
   bool gi_form = s.lighting == LightingForm::gi || s.lighting == LightingForm::view_gi;
   if (gi_form && !s.has_gi_function) {
     diags.add(DiagId::surface_missing_gi, d.span,

@@ -42,6 +42,7 @@ struct Shape {
   bool has_internal_data = false;
   LightingForm lighting = LightingForm::view_gi;
   bool has_gi_function = false;
+  bool has_deferred_function = false;  // Lighting<Model>_Deferred: the surface gets a Deferred pass
   std::string vertex_input = "appdata_full";  // the vertex modifier's struct
   bool vertex_fills_input = false;             // vert(inout appdata v, out Input o)
   bool output_has_occlusion = false;

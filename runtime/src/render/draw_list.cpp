@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 
 #include "facet/variants.h"
 #include "render/shadows.h"
@@ -15,6 +16,21 @@ std::string light_description(const Scene& scene, size_t i) {
                      : scene.lights[i].type == LightType::point     ? "point"
                                                                     : "spot";
   return fmt::format("{} ({})", scene.lights[i].json_path, type);
+}
+
+Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data) {
+  GpuMesh mesh;
+  VkResultOf<Buffer> v = create_buffer(context, data.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  VkResultOf<Buffer> i = create_buffer(context, data.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  if (!v) return unexpected(RenderError{describe(v.error())});
+  if (!i) return unexpected(RenderError{describe(i.error())});
+  std::memcpy(v->data(), data.vertices.data(), data.vertices.size() * sizeof(Vertex));
+  std::memcpy(i->data(), data.indices.data(), data.indices.size() * 4);
+  mesh.vertices = std::move(*v);
+  mesh.indices = std::move(*i);
+  mesh.index_count = uint32_t(data.indices.size());
+  mesh.bounds = mesh_bounds(data);
+  return mesh;
 }
 
 DrawRecord pass_record(const ObjectState& object, size_t p) {
@@ -55,7 +71,28 @@ std::string join(const std::vector<std::string>& words) {
 }
 
 // How a pass takes part in forward rendering.
-enum class Role { once, base, add, vertex, skip };
+enum class Role { once, base, add, vertex, deferred, skip };
+
+// A directional light's receivers read the screen-space mask (screen_shadows.h),
+// which holds what the camera depth texture holds: the opaque objects. As in
+// Unity, a transparent object (queue > 2500) gets no directional shadows.
+bool receives_shadows(const ObjectState& object, const SceneLight& light) {
+  return light.type != LightType::directional || object.queue <= 2500;
+}
+
+const char* kNoTransparentShadows = "; no shadows: transparent (queue > 2500), and the screen-space shadow mask holds "
+                                    "the opaque objects";
+
+bool deferred_mode(const ir::Pass& pass) { return iequals(pass.tag("LightMode"), "Deferred"); }
+
+// Unity's deferred path draws an object into the G-buffer when the camera
+// renders deferred, the object is opaque (queue <= 2500) and its shader has
+// a Deferred pass; everything else is drawn forward.
+bool drawn_deferred(const Scene& scene, const ObjectState& object) {
+  if (!scene.camera.deferred || object.queue > 2500 || object.background) return false;
+  return std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
+                     [](const SelectedPass& p) { return p.ir.kind == ir::PassKind::normal && p.ir.program && deferred_mode(p.ir); });
+}
 
 bool forward_mode(const ir::Pass& pass) {
   std::string mode = pass.tag("LightMode");
@@ -64,12 +101,20 @@ bool forward_mode(const ir::Pass& pass) {
 
 // `forward_shader`: the shader has ForwardBase or ForwardAdd passes, which
 // Unity's forward path draws instead of its vertex-lit ones.
-Role role_of(const ir::Pass& pass, bool forward_shader, std::string& why) {
+Role role_of(const ir::Pass& pass, bool forward_shader, bool deferred, std::string& why) {
   if (pass.kind != ir::PassKind::normal || !pass.program) {
     why = pass.kind == ir::PassKind::grab_pass ? "GrabPass is not supported yet" : "UsePass is not supported yet";
     return Role::skip;
   }
   std::string mode = pass.tag("LightMode");
+  if (deferred) {
+    if (iequals(mode, "Deferred")) return Role::deferred;
+    if (iequals(mode, "ForwardBase") || iequals(mode, "ForwardAdd") || iequals(mode, "Vertex") ||
+        iequals(mode, "VertexLM") || iequals(mode, "VertexLMRGBM")) {
+      why = fmt::format("LightMode {}: the object is drawn deferred (its Deferred pass into the G-buffer)", mode);
+      return Role::skip;
+    }
+  }
   if (mode.empty() || iequals(mode, "Always") || iequals(mode, "SRPDefaultUnlit")) return Role::once;
   if (iequals(mode, "ForwardBase")) return Role::base;
   if (iequals(mode, "ForwardAdd")) return Role::add;
@@ -80,6 +125,10 @@ Role role_of(const ir::Pass& pass, bool forward_shader, std::string& why) {
   }
   if (iequals(mode, "VertexLM") || iequals(mode, "VertexLMRGBM")) {
     why = fmt::format("LightMode {}: drawn only for lightmapped objects (facet has no lightmaps)", mode);
+    return Role::skip;
+  }
+  if (iequals(mode, "Deferred")) {
+    why = "LightMode Deferred: drawn only when the camera renders deferred, for opaque objects (queue <= 2500)";
     return Role::skip;
   }
   why = iequals(mode, "ShadowCaster") ? "LightMode ShadowCaster: drawn only into shadow maps"
@@ -198,10 +247,13 @@ struct Builder {
       light = &lights.lights[size_t(lights.main)];
       record.light = light_name(scene, size_t(lights.main));
       record.why = "ForwardBase: the brightest directional light, ambient as SH" + fog_note;
-      if (light->shadowed) {
-        std::vector<std::string> shadows = shadow_keywords(scene.lights[size_t(lights.main)]);
+      const SceneLight& main = scene.lights[size_t(lights.main)];
+      if (light->shadowed && receives_shadows(object, main)) {
+        std::vector<std::string> shadows = shadow_keywords(main);
         global.insert(global.end(), shadows.begin(), shadows.end());
         record.why += "; its shadows: " + join(shadows);
+      } else if (light->shadowed) {
+        record.why += kNoTransparentShadows;
       }
     } else {
       record.why = "ForwardBase: no directional light (black light), ambient as SH" + fog_note;
@@ -241,13 +293,14 @@ struct Builder {
     bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
                                       [](const SelectedPass& p) { return forward_mode(p.ir); });
     ObjectLights scheduled = schedule_lights(scene, lights, object);
+    const bool deferred = drawn_deferred(scene, object);
     std::vector<std::string> grabs;  // of GrabPasses not yet followed by a draw
     for (size_t p = 0; p < object.shader->passes.size(); ++p) {
       const ir::Pass& pass = object.shader->passes[p].ir;
       std::vector<std::string> before = grab_passes_before(*object.shader, p);
       grabs.insert(grabs.end(), before.begin(), before.end());
       const size_t first_draw = out.draws.size();
-      Result<void, RenderError> drawn = pass_draws(object, p, pass, scheduled, fog, fog_note, forward_shader);
+      Result<void, RenderError> drawn = pass_draws(object, p, pass, scheduled, fog, fog_note, forward_shader, deferred);
       if (!drawn) return drawn;
       if (out.draws.size() > first_draw && !grabs.empty()) {
         Draw& d = out.draws[first_draw];
@@ -262,10 +315,10 @@ struct Builder {
   // The draws of pass `p` of `object`: none (skipped), one, or one per light.
   Result<void, RenderError> pass_draws(ObjectState& object, size_t p, const ir::Pass& pass,
                                        const ObjectLights& scheduled, const std::vector<std::string>& fog,
-                                       const std::string& fog_note, bool forward_shader) {
+                                       const std::string& fog_note, bool forward_shader, bool deferred) {
     DrawRecord record = pass_record(object, p);
     std::string why;
-    Role role = role_of(pass, forward_shader, why);
+    Role role = role_of(pass, forward_shader, deferred, why);
     if (role == Role::skip) {
       record.drawn = false;
       record.why = why;
@@ -278,7 +331,23 @@ struct Builder {
       return add(object, p, &lights.none, fog, record);
     }
     if (role == Role::base) return base_draw(object, p, scheduled, fog, fog_note, record);
+    if (role == Role::deferred) return gbuffer_draw(object, p, record);
     return additive_draws(object, p, scheduled, fog, fog_note, record);
+  }
+
+  // Deferred: the surface into the G-buffer, and what it gives off by itself
+  // (ambient as SH, reflections, emission) into the light buffer; every
+  // light is added later from the G-buffer. Unity's HDR camera: the light
+  // buffer is the RGBA16F colour target (UNITY_HDR_ON). No fog: Unity's
+  // deferred path leaves fog to an image effect.
+  Result<void, RenderError> gbuffer_draw(ObjectState& object, size_t p, DrawRecord record) {
+    record.why = "Deferred: the G-buffer (diffuse, specular and smoothness, normal) and ambient, reflections and "
+                 "emission into the light buffer; the lights are added from the G-buffer";
+    const size_t before = out.draws.size();
+    FACET_TRY(add(object, p, &lights.none, {"LIGHTPROBE_SH", "UNITY_HDR_ON"}, std::move(record)));
+    out.gbuffer.push_back(std::move(out.draws[before]));
+    out.draws.erase(out.draws.begin() + long(before));
+    return {};
   }
 
   // ForwardAdd: one draw per further pixel light.
@@ -302,10 +371,12 @@ struct Builder {
       add_record.why = fmt::format("ForwardAdd: further pixel light {} of {}{}, additive", k + 1, extra.size(),
                                    important ? " (important: always a pixel light)" : "") +
                        fog_note;
-      if (light.shadowed) {
+      if (light.shadowed && receives_shadows(object, scene.lights[extra[k]])) {
         std::vector<std::string> shadows = shadow_keywords(scene.lights[extra[k]]);
         global.insert(global.end(), shadows.begin(), shadows.end());
         add_record.why += "; its shadows: " + join(shadows);
+      } else if (light.shadowed) {
+        add_record.why += kNoTransparentShadows;
       }
       if (light.cookie) add_record.why += fmt::format("; cookie {}.cookie as _LightTexture0", scene.lights[extra[k]].json_path);
       FACET_TRY(add(object, p, &light, global, add_record));
@@ -404,6 +475,12 @@ Result<DrawListResult, RenderError> build_draws(const Context& context, const Sc
                                                 ShaderLibrary& library) {
   Builder builder{context, scene, objects, lights, library, {}};
   for (ObjectState& object : objects) FACET_TRY(builder.object_draws(object));
+  std::stable_sort(builder.out.gbuffer.begin(), builder.out.gbuffer.end(), [&](const Draw& a, const Draw& b) {
+    const ObjectState& oa = objects[a.object];
+    const ObjectState& ob = objects[b.object];
+    if (oa.queue != ob.queue) return oa.queue < ob.queue;
+    return oa.distance < ob.distance;
+  });
   // Queues in order; opaque front to back, transparent (queue > 2500) back to
   // front; an object's passes stay together and in shader order.
   std::stable_sort(builder.out.draws.begin(), builder.out.draws.end(), [&](const Draw& a, const Draw& b) {

@@ -31,6 +31,9 @@ struct GpuMesh {
   Bounds bounds;
 };
 
+// The mesh in host-visible vertex and index buffers.
+Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data);
+
 struct ObjectState {
   size_t index = 0;
   const SceneObject* scene = nullptr;
@@ -99,6 +102,10 @@ std::vector<size_t> vertex_lights(const Scene& scene, const LightSetup& setup, c
 
 struct DrawListResult {
   std::vector<Draw> draws;            // sorted for submission
+  // With the deferred path (SceneCamera::deferred): the LightMode Deferred
+  // passes of the opaque objects, front to back, drawn into the G-buffer
+  // before `draws`; those objects' forward passes are skipped.
+  std::vector<Draw> gbuffer;
   std::vector<DrawRecord> skipped;    // passes not drawn
   uint64_t variants_compiled = 0;
   std::vector<std::string> compiled;  // descriptions, compile order

@@ -169,6 +169,10 @@ LightValues light_values(const SceneLight& light) {
   set(u, "_FacetLightColor0", glm::vec4(color, 1));
   set(u, "_LightColor0", glm::vec4(color, 1));
   set(u, "_LightShadowData", {1, 0, 0, 0});
+  // The deferred light pass's names for the same light (UnityDeferredLibrary.cginc).
+  set(u, "_LightColor", glm::vec4(color, 1));
+  set(u, "_LightDir", glm::vec4(l.direction, 0));
+  set(u, "_LightPos", glm::vec4(l.position, light.type == LightType::directional ? 0 : 1 / (light.range * light.range)));
   u.set_elements("unity_WorldToShadow", std::vector<float>(64, 0.0f));
   l.cookie = light.cookie;
   l.json_path = light.json_path;

@@ -136,6 +136,13 @@ Result<std::unique_ptr<GpuProgram>, std::string> create_program(const Context& c
     p->entries.push_back(stage.reflection.entry_point);
     const StageReflection& r = stage.reflection;
     if (stage.stage == Stage::vertex) p->vertex_inputs = r.inputs;
+    if (stage.stage == Stage::fragment) {
+      for (const StageVariable& out : r.outputs) {
+        for (uint32_t l = 0; l < std::max(1u, out.array_size); ++l) {
+          if (out.location + l < 32) p->fragment_outputs |= 1u << (out.location + l);
+        }
+      }
+    }
     for (const UniformBlock& b : r.uniform_blocks) {
       if (b.push_constant) {
         p->push_constant_bytes = std::max(p->push_constant_bytes, b.size);
@@ -203,8 +210,9 @@ Result<void, std::string> check_features(const Context& context, const GpuProgra
 
 Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram& program, const PipelineState& state,
                                              bool mirrored, VkRenderPass render_pass, VkPipelineCache cache,
-                                             bool* created) {
+                                             bool* created, uint32_t color_targets) {
   std::string key = describe(state) + (mirrored ? " mirrored" : "");
+  if (color_targets != 1) key += fmt::format(" targets {}", color_targets);
   if (state.stencil) {
     key += fmt::format(" {} {} {} {} {} {}", int(state.front.compareOp), int(state.front.passOp), state.front.reference,
                        int(state.back.compareOp), int(state.back.passOp), state.back.reference);
@@ -270,9 +278,14 @@ Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram&
   blend.dstAlphaBlendFactor = state.dst_alpha;
   blend.alphaBlendOp = state.op_alpha;
   blend.colorWriteMask = state.color_mask;
+  std::vector<VkPipelineColorBlendAttachmentState> blends(color_targets, blend);
+  const bool independent = context.enabled_features().independentBlend;
+  for (uint32_t i = 0; i < color_targets && color_targets > 1 && independent; ++i) {
+    if (!(program.fragment_outputs & (1u << i))) blends[i].colorWriteMask = 0;
+  }
   VkPipelineColorBlendStateCreateInfo color{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  color.attachmentCount = 1;
-  color.pAttachments = &blend;
+  color.attachmentCount = color_targets;
+  color.pAttachments = blends.data();
   VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   dynamic.dynamicStateCount = 2;

@@ -35,6 +35,7 @@ struct GpuProgram {
   std::vector<UniformBlock> blocks;         // every stage's blocks merged by (set, binding)
   std::vector<ResourceBinding> resources;   // likewise
   std::vector<StageVariable> vertex_inputs;
+  uint32_t fragment_outputs = 0;  // bit i: the fragment stage writes SV_Target i (location i)
   uint32_t push_constant_bytes = 0;
   VkShaderStageFlags push_stages = 0;
   std::map<std::string, VkPipeline> pipelines;  // by state text
@@ -54,8 +55,11 @@ std::vector<VkVertexInputAttributeDescription> vertex_attributes(const GpuProgra
 
 // The pipeline for this state (created on first use, then reused).
 // `mirrored` flips the front face for objects with a negative scale.
+// `color_targets`: the render pass's colour attachments (the deferred
+// G-buffer has 4); each gets the state's blend, and a target the fragment
+// stage does not write is masked off, so that it keeps what it holds.
 Result<VkPipeline, std::string> get_pipeline(const Context& context, GpuProgram& program, const PipelineState& state,
                                              bool mirrored, VkRenderPass render_pass, VkPipelineCache cache,
-                                             bool* created);
+                                             bool* created, uint32_t color_targets = 1);
 
 }  // namespace facet::runtime

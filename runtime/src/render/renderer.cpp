@@ -18,12 +18,14 @@
 #include "facet/runtime/vulkan_context.h"
 #include "render/background.h"
 #include "render/capture.h"
+#include "render/deferred.h"
 #include "render/draw_list.h"
 #include "render/environment_lighting.h"
 #include "render/probes.h"
 #include "render/grab.h"
 #include "render/post.h"
 #include "render/resources.h"
+#include "render/screen_shadows.h"
 #include "render/shadow_pass.h"
 
 namespace facet::runtime {
@@ -317,21 +319,6 @@ Result<void, RenderError> make_post_targets(const Context& context, PostTargets&
   return {};
 }
 
-Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data) {
-  GpuMesh mesh;
-  VkResultOf<Buffer> v = create_buffer(context, data.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  VkResultOf<Buffer> i = create_buffer(context, data.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-  if (!v) return unexpected(error(describe(v.error())));
-  if (!i) return unexpected(error(describe(i.error())));
-  std::memcpy(v->data(), data.vertices.data(), data.vertices.size() * sizeof(Vertex));
-  std::memcpy(i->data(), data.indices.data(), data.indices.size() * 4);
-  mesh.vertices = std::move(*v);
-  mesh.indices = std::move(*i);
-  mesh.index_count = uint32_t(data.indices.size());
-  mesh.bounds = mesh_bounds(data);
-  return mesh;
-}
-
 struct Loader {
   const Context& context;
   const Scene& scene;
@@ -411,6 +398,7 @@ struct Recorder {
   VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
   CaptureBuilder* capture = nullptr;
   const ShadowPasses* shadows = nullptr;  // _ShadowMapTexture of the draw's light
+  const ScreenShadows* screen_shadows = nullptr;  // the mask SHADOWS_SCREEN draws read as _ShadowMapTexture
   // What the first frame allocated and wrote for each draw. Later frames
   // bind the same sets and rewrite in place (the previous frame has
   // finished) the members that come from the frame layer, which is
@@ -444,8 +432,13 @@ struct Recorder {
     push_zeros(commands, program);
   }
 
-  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light) {
+  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light,
+                                              bool screen_shadowed) {
     if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
+    // In any set: Unity's own AutoLight.cginc declares it outside facet's light set.
+    if (r.name == "_ShadowMapTexture" && screen_shadowed && screen_shadows) {
+      if (const Image* mask = screen_shadows->mask_of(&light)) return mask;
+    }
     if (r.set == 1 && r.name == "_LightTexture0" && light.cookie) return cookie_image(light);
     // Declared outside facet's light set: Unity's own AutoLight.cginc, whose
     // falloffs are textures (Resources::light_falloff, spot_cone).
@@ -507,6 +500,7 @@ struct Recorder {
       return {};
     }
     UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
+    const bool screen_shadowed = reads_screen_shadows(draw);
     Retained& kept = retained[&draw];
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!program.set_used[set]) continue;
@@ -552,15 +546,18 @@ struct Recorder {
         VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
         CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
         if (r.kind != ResourceKind::separate_sampler) {
-          Result<const Image*, RenderError> image = image_for(r, object, *draw.light);
+          Result<const Image*, RenderError> image = image_for(r, object, *draw.light, screen_shadowed);
           if (!image) return unexpected(image.error());
           if (captured) {
             Result<int, std::string> index = capture->image(*image);
             if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
             described.image = *index;
           }
-          // Depth is not linearly filterable; a shadow cube's distances must not be blended.
-          if ((is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image))) && point_sampler) {
+          // Depth is not linearly filterable; a shadow cube's distances must not
+          // be blended; a screen-space shadow mask is read texel for texel.
+          bool unfiltered = is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image)) ||
+                            (screen_shadows && screen_shadows->owns(*image));
+          if (unfiltered && point_sampler) {
             info.sampler = point_sampler;
           }
           if (resources.clamped(*image)) {
@@ -750,14 +747,34 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     if (!chain) return unexpected(chain.error());
     post = std::move(*chain);
   }
+  // The deferred path's light pass; without an object drawn deferred the
+  // frame is a forward one.
+  std::unique_ptr<DeferredLights> deferred;
+  if (scene.camera.deferred && !list->gbuffer.empty()) {
+    auto built = build_deferred_lights(context, scene, library, lights, camera);
+    if (!built) return unexpected(built.error());
+    deferred = std::move(*built);
+  }
+  // Unity draws the sky behind the opaque objects at the far plane; the
+  // deferred ones are in the depth before the sky, so it is tested there
+  // (its draw is given depth 1 by its viewport, see below).
+  for (Draw& d : list->draws) {
+    if (!deferred || !objects[d.object].background) continue;
+    d.state.depth_test = true;
+    d.state.ztest = VK_COMPARE_OP_LESS_OR_EQUAL;
+    d.state.zwrite = false;
+    d.record.state = describe(d.state) + " (at the far plane: behind the deferred objects)";
+  }
   // The camera depth texture is the depth buffer itself, kept when an image
-  // effect samples it; D32 without stencil, so that it can be sampled.
+  // effect samples it; D32 without stencil, so that it can be sampled (as
+  // the deferred light pass samples it).
   bool depth_sampled = post && std::any_of(post->list.draws.begin(), post->list.draws.end(),
                                            [](const Draw& d) { return samples(d, "_CameraDepthTexture"); });
+  const bool depth_readable = depth_sampled || deferred;
 
   FrameObjects fo;
   fo.device = context.device();
-  VkFormat depth = depth_sampled ? VK_FORMAT_D32_SFLOAT : depth_format(context);
+  VkFormat depth = depth_readable ? VK_FORMAT_D32_SFLOAT : depth_format(context);
   VkResultOf<Image> color = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -766,11 +783,16 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   VkResultOf<Image> depth_image = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
                                                          .format = depth,
                                                          .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                                                  (depth_sampled ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
+                                                                  (depth_readable ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
   if (!depth_image) return unexpected(error(describe(depth_image.error())));
   PostTargets targets;
   if (post) FACET_TRY(make_post_targets(context, targets, frame.width, frame.height));
-  const PassEnds last_part{.load = false, .sampled = post != nullptr, .depth_sampled = depth_sampled};
+  // After the deferred passes the forward part continues on their colour and depth.
+  const PassEnds last_part{.load = deferred != nullptr, .sampled = post != nullptr, .depth_sampled = depth_sampled};
+  DeferredTargets gbuffer;
+  if (deferred) {
+    FACET_TRY(make_deferred_targets(context, *color, *depth_image, uint32_t(frame.width), uint32_t(frame.height), gbuffer));
+  }
   Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), depth, last_part);
   if (!pass) return unexpected(pass.error());
   fo.render_pass = *pass;
@@ -790,14 +812,31 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     fo.cache = VK_NULL_HANDLE;  // undefined after a failure; the frame's objects destroy what is not null
     return unexpected(error(fmt::format("cannot create the pipeline cache (VkResult {})", int(r))));
   }
-  std::vector<VkPipeline> pipelines;
-  for (const Draw& d : list->draws) {
-    bool created = false;
-    Result<VkPipeline, std::string> p = get_pipeline(context, *d.variant->program, d.state, objects[d.object].mirrored,
-                                                     fo.render_pass, fo.cache, &created);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
-    pipelines.push_back(*p);
-    frame.stats.pipelines += created;
+  // The pipelines of `draws` in `render_pass`, one a draw.
+  auto pipelines_for = [&](const std::vector<Draw>& draws, const std::vector<ObjectState>& owners,
+                           VkRenderPass render_pass, uint32_t color_targets) -> Result<std::vector<VkPipeline>, RenderError> {
+    std::vector<VkPipeline> out;
+    for (const Draw& d : draws) {
+      bool created = false;
+      Result<VkPipeline, std::string> p = get_pipeline(context, *d.variant->program, d.state, owners[d.object].mirrored,
+                                                       render_pass, fo.cache, &created, color_targets);
+      if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+      out.push_back(*p);
+      frame.stats.pipelines += created;
+    }
+    return out;
+  };
+  Result<std::vector<VkPipeline>, RenderError> made = pipelines_for(list->draws, objects, fo.render_pass, 1);
+  if (!made) return unexpected(made.error());
+  const std::vector<VkPipeline> pipelines = std::move(*made);
+  std::vector<VkPipeline> gbuffer_pipelines, light_pipelines;
+  if (deferred) {
+    made = pipelines_for(list->gbuffer, objects, gbuffer.gbuffer_pass, kGBufferTargets);
+    if (!made) return unexpected(made.error());
+    gbuffer_pipelines = std::move(*made);
+    made = pipelines_for(deferred->list.draws, deferred->screen.objects, gbuffer.light_pass, 1);
+    if (!made) return unexpected(made.error());
+    light_pipelines = std::move(*made);
   }
   Result<GrabPlan, RenderError> grab_plan =
       plan_grabs(context, scene, list->draws, uint32_t(frame.width), uint32_t(frame.height));
@@ -805,7 +844,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   GrabPlan& grabs = *grab_plan;
   if (!grabs.points.empty()) {
     if (options.capture) return unexpected(error(scene.path + ": a frame capture does not cover GrabPass"));
-    PassEnds first{.to_grab = true}, middle{.load = true, .to_grab = true}, last = last_part;
+    PassEnds first{.load = deferred != nullptr, .to_grab = true}, middle{.load = true, .to_grab = true}, last = last_part;
     last.load = true;
     for (auto [ends, out] : {std::pair{first, &fo.first_part}, {middle, &fo.middle_part}, {last, &fo.last_part}}) {
       Result<VkRenderPass, RenderError> part = make_render_pass(context.device(), depth, ends);
@@ -814,28 +853,38 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     }
   }
   ShadowPasses shadows;
-  FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, list->draws, library, fo.cache, shadows,
+  // The maps some drawn variant samples: forward receivers', and the deferred light pass's.
+  std::vector<Draw> receivers = list->draws;
+  if (deferred) receivers.insert(receivers.end(), deferred->list.draws.begin(), deferred->list.draws.end());
+  FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, receivers, library, fo.cache, shadows,
                                 frame.stats.pipelines));
+  // The directional lights whose receivers read a screen-space mask.
+  std::vector<Draw> no_draws;
+  const std::vector<const LightValues*> screen_lights = screen_shadowed_lights(
+      {&list->draws, deferred ? &deferred->list.draws : &no_draws});
   // Objects that sample _CameraDepthTexture get Unity's depth texture: the
-  // opaque objects' ShadowCaster passes from the camera, before the scene.
-  if (std::any_of(list->draws.begin(), list->draws.end(), [](const Draw& d) { return samples(d, "_CameraDepthTexture"); })) {
+  // opaque objects' ShadowCaster passes from the camera, before the scene;
+  // the screen-space shadow pass reads it too.
+  if (!screen_lights.empty() ||
+      std::any_of(list->draws.begin(), list->draws.end(), [](const Draw& d) { return samples(d, "_CameraDepthTexture"); })) {
     FACET_TRY(prepare_camera_depth(context, scene, objects, lights.none, camera, uint32_t(frame.width),
                                    uint32_t(frame.height), library, fo.cache, shadows, frame.stats.pipelines));
   }
+  ScreenShadows screen_shadows;
+  FACET_TRY(prepare_screen_shadows(context, scene, library, camera, screen_lights, uint32_t(frame.width),
+                                   uint32_t(frame.height), fo.cache, screen_shadows, frame.stats.pipelines));
   if (options.capture && !shadows.maps.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover shadow maps or the camera depth texture"));
   }
-  std::vector<Draw> no_draws;
   std::vector<VkPipeline> post_pipelines;
-  for (const Draw& d : post ? post->list.draws : no_draws) {
-    bool created = false;
-    Result<VkPipeline, std::string> p =
-        get_pipeline(context, *d.variant->program, d.state, false, targets.render_pass, fo.cache, &created);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
-    post_pipelines.push_back(*p);
-    frame.stats.pipelines += created;
+  if (post) {
+    made = pipelines_for(post->list.draws, post->steps, targets.render_pass, 1);
+    if (!made) return unexpected(made.error());
+    post_pipelines = std::move(*made);
   }
-  std::vector<const std::vector<Draw>*> all_lists = {&list->draws, post ? &post->list.draws : &no_draws};
+  std::vector<const std::vector<Draw>*> all_lists = {&list->draws, post ? &post->list.draws : &no_draws, &list->gbuffer,
+                                                     deferred ? &deferred->list.draws : &no_draws,
+                                                     &screen_shadows.list.draws};
   for (const auto& map : shadows.maps) all_lists.push_back(&map->casters.draws);
   Result<VkDescriptorPool, RenderError> pool = make_pool(context.device(), all_lists);
   if (!pool) return unexpected(pool.error());
@@ -843,7 +892,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   UniformArena arena(context);
   Recorder recorder{context, resources, arena, fo.pool};
   recorder.shadows = &shadows;
-  if (!shadows.maps.empty()) {
+  recorder.screen_shadows = &screen_shadows;
+  if (!shadows.maps.empty() || deferred) {
     Result<VkSampler, std::string> sampler = resources.point_sampler();
     if (!sampler) return unexpected(error(sampler.error()));
     recorder.point_sampler = *sampler;
@@ -886,6 +936,70 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
       return;
     }
     frame.stats.triangles += *shadow_triangles;
+    VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
+    VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+    // Draws `draws` [first, last) with `pipelines` in a render pass already begun.
+    auto draw_all = [&](const std::vector<Draw>& draws, const std::vector<VkPipeline>& draw_pipelines,
+                        const std::vector<ObjectState>& owners, size_t first = 0, size_t last = SIZE_MAX) {
+      vkCmdSetViewport(commands, 0, 1, &viewport);
+      vkCmdSetScissor(commands, 0, 1, &scissor);
+      for (size_t i = first; i < std::min(last, draws.size()) && !failed; ++i) {
+        const Draw& d = draws[i];
+        const ObjectState& object = owners[d.object];
+        vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipelines[i]);
+        if (Result<void, RenderError> bound = recorder.bind(commands, d, object, frame_values); !bound) {
+          failed = bound.error();
+          break;
+        }
+        VkBuffer vb = object.mesh->vertices.handle();
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
+        vkCmdBindIndexBuffer(commands, object.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
+        frame.stats.triangles += object.mesh->index_count / 3;
+      }
+    };
+    for (size_t i = 0; i < screen_shadows.list.draws.size() && !failed; ++i) {
+      VkRenderPassBeginInfo mask{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      mask.renderPass = screen_shadows.render_pass;
+      mask.framebuffer = screen_shadows.framebuffers[i];
+      mask.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+      VkClearValue lit{};
+      lit.color = {{1, 1, 1, 1}};
+      mask.clearValueCount = 1;
+      mask.pClearValues = &lit;
+      vkCmdBeginRenderPass(commands, &mask, VK_SUBPASS_CONTENTS_INLINE);
+      recorder.overrides.clear();
+      draw_all(screen_shadows.list.draws, screen_shadows.pipelines, screen_shadows.screen.objects, i, i + 1);
+      vkCmdEndRenderPass(commands);
+    }
+    if (deferred) {
+      glm::vec3 clear_rgb = linear_color({scene.camera.clear_color[0], scene.camera.clear_color[1], scene.camera.clear_color[2]});
+      std::array<VkClearValue, kGBufferTargets + 1> gclears{};
+      gclears[3].color = {{clear_rgb.r, clear_rgb.g, clear_rgb.b, scene.camera.clear_color[3]}};
+      gclears[4].depthStencil = {1.0f, 0};
+      VkRenderPassBeginInfo g{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      g.renderPass = gbuffer.gbuffer_pass;
+      g.framebuffer = gbuffer.gbuffer_framebuffer;
+      g.renderArea = {{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+      g.clearValueCount = uint32_t(gclears.size());
+      g.pClearValues = gclears.data();
+      vkCmdBeginRenderPass(commands, &g, VK_SUBPASS_CONTENTS_INLINE);
+      recorder.overrides.clear();
+      draw_all(list->gbuffer, gbuffer_pipelines, objects);
+      vkCmdEndRenderPass(commands);
+      VkRenderPassBeginInfo l = g;
+      l.renderPass = gbuffer.light_pass;
+      l.framebuffer = gbuffer.light_framebuffer;
+      l.clearValueCount = 0;
+      l.pClearValues = nullptr;
+      vkCmdBeginRenderPass(commands, &l, VK_SUBPASS_CONTENTS_INLINE);
+      recorder.overrides = gbuffer_textures(gbuffer, *depth_image);
+      draw_all(deferred->list.draws, light_pipelines, deferred->screen.objects);
+      vkCmdEndRenderPass(commands);
+      transition(commands, *depth_image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    }
     VkClearValue clears[2]{};
     clears[0].color = {{clear.r, clear.g, clear.b, scene.camera.clear_color[3]}};
     clears[1].depthStencil = {1.0f, 0};
@@ -896,8 +1010,6 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     begin.clearValueCount = 2;
     begin.pClearValues = clears;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
-    VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &scissor);
     recorder.overrides.clear();
@@ -920,6 +1032,11 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
         vkCmdSetViewport(commands, 0, 1, &viewport);
         vkCmdSetScissor(commands, 0, 1, &scissor);
       }
+      if (deferred && object.background) {
+        VkViewport far_plane = viewport;
+        far_plane.minDepth = far_plane.maxDepth = 1;
+        vkCmdSetViewport(commands, 0, 1, &far_plane);
+      }
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[i]);
       std::optional<CapturedDraw> captured;
       if (capturing) {
@@ -938,6 +1055,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
       vkCmdBindIndexBuffer(commands, object.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
       vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
       frame.stats.triangles += object.mesh->index_count / 3;
+      if (deferred && object.background) vkCmdSetViewport(commands, 0, 1, &viewport);
     }
     vkCmdEndRenderPass(commands);
     const Image* result = &*color;
@@ -1002,11 +1120,24 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     (map->light ? frame.stats.shadow_draws : frame.stats.depth_texture_draws) += map->casters.draws.size();
   }
   frame.stats.shadow_maps = shadows.light_maps();
+  for (Draw& d : screen_shadows.list.draws) frame.draws.push_back(std::move(d.record));
+  frame.compiled.insert(frame.compiled.end(), screen_shadows.list.compiled.begin(), screen_shadows.list.compiled.end());
+  frame.stats.variants_compiled += screen_shadows.list.variants_compiled;
+  frame.stats.screen_shadow_masks = screen_shadows.list.draws.size();
+  for (Draw& d : list->gbuffer) frame.draws.push_back(std::move(d.record));
+  if (deferred) {
+    for (Draw& d : deferred->list.draws) frame.draws.push_back(std::move(d.record));
+    frame.compiled.insert(frame.compiled.end(), deferred->list.compiled.begin(), deferred->list.compiled.end());
+    frame.stats.variants_compiled += deferred->list.variants_compiled;
+    frame.stats.deferred_lights = deferred->list.draws.size();
+  }
+  frame.stats.gbuffer_draws = list->gbuffer.size();
   for (Draw& d : list->draws) {
     frame.stats.additive_draws += d.record.additive;
     frame.draws.push_back(std::move(d.record));
   }
-  frame.stats.draws = list->draws.size() + frame.stats.shadow_draws + frame.stats.depth_texture_draws;
+  frame.stats.draws = list->draws.size() + frame.stats.shadow_draws + frame.stats.depth_texture_draws +
+                      frame.stats.gbuffer_draws + frame.stats.deferred_lights + frame.stats.screen_shadow_masks;
   frame.compiled.insert(frame.compiled.end(), list->compiled.begin(), list->compiled.end());
   frame.stats.variants_compiled += list->variants_compiled;
   if (post) {

@@ -1,5 +1,7 @@
 #include "render/shadow_pass.h"
 
+#include "render/targets.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -101,23 +103,6 @@ bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) 
                      [&](const Draw& d) {
                        return d.light && d.light->scene_light() == light && samples_shadow_map(d.record.keywords);
                      });
-}
-
-Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPass pass,
-                                                   std::initializer_list<VkImageView> views, uint32_t width,
-                                                   uint32_t height) {
-  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb.renderPass = pass;
-  fb.attachmentCount = uint32_t(views.size());
-  fb.pAttachments = views.begin();
-  fb.width = width;
-  fb.height = height;
-  fb.layers = 1;
-  VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  if (VkResult r = vkCreateFramebuffer(device, &fb, nullptr, &framebuffer); r != VK_SUCCESS) {
-    return unexpected(error("cannot create a shadow-map framebuffer: " + vk_result_name(r)));
-  }
-  return framebuffer;
 }
 
 Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {

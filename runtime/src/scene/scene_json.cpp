@@ -155,7 +155,7 @@ struct Reader {
 
   SceneCamera camera(const json& j, const std::string& path) const {
     check_keys(j, path, {"type", "position", "rotation", "look_at", "fov", "size", "near", "far", "clear_color",
-                         "clear", "exposure"});
+                         "clear", "exposure", "rendering_path"});
     SceneCamera c;
     c.transform = transform(j, path);
     if (j.contains("type")) {
@@ -173,6 +173,10 @@ struct Reader {
       c.clear_sky = word<bool>(member(j, "clear"), join(path, "clear"), {{"color", false}, {"sky", true}});
     }
     if (j.contains("exposure")) c.exposure = positive(member(j, "exposure"), join(path, "exposure"));
+    if (j.contains("rendering_path")) {
+      c.deferred = word<bool>(member(j, "rendering_path"), join(path, "rendering_path"),
+                              {{"forward", false}, {"deferred", true}});
+    }
     return c;
   }
 

@@ -99,6 +99,7 @@ struct ContextBuilder {
     context.features_.geometryShader = supported.geometryShader;
     context.features_.tessellationShader = supported.tessellationShader;
     context.features_.depthClamp = supported.depthClamp;
+    context.features_.independentBlend = supported.independentBlend;  // G-buffer targets a pass does not write
     info.pEnabledFeatures = &context.features_;
     if (VkResult result = vkCreateDevice(context.physical_, &info, nullptr, &context.device_); result != VK_SUCCESS) {
       return vk_failure(VkErrorCode::device_failed, fmt::format("cannot create a device on {}", context.info_.name),

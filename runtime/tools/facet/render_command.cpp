@@ -38,8 +38,13 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
                      f.stats.draws, f.stats.additive_draws, f.stats.triangles, f.stats.pipelines,
                      f.stats.variants_compiled, f.stats.shaders_loaded, f.stats.textures_loaded);
   if (f.stats.shadow_maps || f.stats.depth_texture_draws) {
-    out << fmt::format("shadow maps: {} ({} caster draws), camera depth texture: {} draws\n", f.stats.shadow_maps,
-                       f.stats.shadow_draws, f.stats.depth_texture_draws);
+    out << fmt::format("shadow maps: {} ({} caster draws), camera depth texture: {} draws, screen-space shadow "
+                       "masks: {}\n",
+                       f.stats.shadow_maps, f.stats.shadow_draws, f.stats.depth_texture_draws,
+                       f.stats.screen_shadow_masks);
+  }
+  if (f.stats.gbuffer_draws) {
+    out << fmt::format("deferred: {} G-buffer draws, {} light draws\n", f.stats.gbuffer_draws, f.stats.deferred_lights);
   }
   if (f.stats.grabs) out << fmt::format("GrabPass copies of the screen: {}\n", f.stats.grabs);
   if (f.stats.frame_ms.size() > 1) {

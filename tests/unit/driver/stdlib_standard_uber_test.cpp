@@ -45,14 +45,16 @@ TEST_P(StdlibStandardUberMaterialTest, EveryEngineVariantOfTheMaterialCompilesTo
   ASSERT_TRUE(compiled) << render_text(l.diags, l.sources);
   EXPECT_EQ(l.diags.error_count(), 0u) << render_text(l.diags, l.sources);
   const package::Package& pkg = compiled->package;
-  ASSERT_EQ(pkg.passes.size(), 4u);
+  ASSERT_EQ(pkg.passes.size(), 5u);
   // fwdbase 8 (vertex lights or not) x fog 4 x instancing 2; fwdadd_fullshadows 13 x fog 4 (Unity's
   // 47 without the shadowmask keywords);
-  // shadowcaster 2 x instancing 2; meta 1.
+  // shadowcaster 2 x instancing 2; prepassfinal 4 (LIGHTPROBE_SH, UNITY_HDR_ON: no lightmaps or
+  // shadowmask) x instancing 2; meta 1.
   EXPECT_EQ(pkg.passes[0].variants.size(), 64u);
   EXPECT_EQ(pkg.passes[1].variants.size(), 52u);
   EXPECT_EQ(pkg.passes[2].variants.size(), 4u);
-  EXPECT_EQ(pkg.passes[3].variants.size(), 1u);
+  EXPECT_EQ(pkg.passes[3].variants.size(), 8u);
+  EXPECT_EQ(pkg.passes[4].variants.size(), 1u);
   for (const package::PackagePass& pass : pkg.passes)
     for (const package::PackageVariant& variant : pass.variants) EXPECT_EQ(variant.stages.size(), 2u) << pass.name;
   EXPECT_GT(stdlib_test::expect_valid_spirv(pkg), 8u);
@@ -69,14 +71,15 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 // 64 (pass, keyword set) pairs drawn uniformly from the whole space of all
-// four passes with a fixed seed.
+// five passes (ForwardBase, ForwardAdd, ShadowCaster, Deferred, Meta) with a
+// fixed seed.
 TEST(StdlibStandardUberTest, SeededSampleOf64KeywordSetsCompilesToValidSpirv) {
   Loaded l;
   load(l);
   CompileOptions options;
   auto passes = l.compiler.select_passes(*l.shader, options, l.diags);
   ASSERT_TRUE(passes) << render_text(l.diags, l.sources);
-  ASSERT_EQ(passes->size(), 4u);
+  ASSERT_EQ(passes->size(), 5u);
 
   // The variants facet builds of each pass (Unity's listed shortcut
   // combinations, without the keywords facet's renderer never enables).

@@ -78,20 +78,23 @@ const std::string kBase = "FORWARD:ForwardBase[multi_compile_fwdbase,multi_compi
 const std::string kAdd = "FORWARD_DELTA:ForwardAdd[multi_compile_fwdadd,multi_compile_fog]";
 const std::string kAddFull = "FORWARD_DELTA:ForwardAdd[multi_compile_fwdadd_fullshadows,multi_compile_fog]";
 const std::string kShadow = "ShadowCaster:ShadowCaster[multi_compile_shadowcaster,multi_compile_instancing]";
+// Lighting models with a Lighting<Model>_Deferred function (the built-in
+// four) get one; custom models (WrapGI, Toon, Translucent) and alpha:fade do not.
+const std::string kDeferred = "DEFERRED:Deferred[multi_compile_prepassfinal,multi_compile_instancing]";
 
 INSTANTIATE_TEST_SUITE_P(
     Examples, SurfaceExampleTest,
-    testing::Values(Expected{"SurfaceLambertVertex.shader", {kBase, kAdd, kShadow}},
-                    Expected{"SurfaceBlinnPhongNormal.shader", {kBase, kAdd, kShadow}},
-                    Expected{"SurfaceStandard.shader", {kBase, kAddFull, kShadow}},
-                    Expected{"SurfaceStandardSpecular.shader", {kBase, kAdd, kShadow}},
+    testing::Values(Expected{"SurfaceLambertVertex.shader", {kBase, kAdd, kDeferred, kShadow}},
+                    Expected{"SurfaceBlinnPhongNormal.shader", {kBase, kAdd, kDeferred, kShadow}},
+                    Expected{"SurfaceStandard.shader", {kBase, kAddFull, kDeferred, kShadow}},
+                    Expected{"SurfaceStandardSpecular.shader", {kBase, kAdd, kDeferred, kShadow}},
                     Expected{"SurfaceCustomGI.shader", {kBase, kAdd, kShadow}},
                     // noforwardadd and no Fallback: one pass
                     Expected{"SurfaceCustomOutput.shader", {kBase}},
                     Expected{"SurfaceTranslucent.shader", {kBase, kAddFull, kShadow}},
-                    Expected{"SurfaceReflection.shader", {kBase, kAdd, kShadow}},
+                    Expected{"SurfaceReflection.shader", {kBase, kAdd, kDeferred, kShadow}},
                     Expected{"SurfaceAlpha.shader", {kBase, kAdd, kShadow}},
-                    Expected{"SurfaceCutout.shader", {kBase, kAdd, kShadow}}),
+                    Expected{"SurfaceCutout.shader", {kBase, kAdd, kDeferred, kShadow}}),
     [](const auto& info) { return info.param.file.substr(0, info.param.file.find('.')); });
 
 TEST(SurfaceLoweringTest, EveryExampleVariantCompiles) {
@@ -278,6 +281,38 @@ TEST(SurfaceLoweringTest, ForwardBaseLightsFourPointLightsPerVertexUnlessNoVerte
   EXPECT_TRUE(compiler.compile(*with->shader, options, with->sources, diags)) << render_text(diags, with->sources);
 }
 
+// The Deferred pass writes the G-buffer and the light buffer through
+// Lighting<Model>_Deferred after <Model>_GI with a black light, with no fog
+// and no shadow coordinates; exclude_path:deferred leaves it out.
+TEST(SurfaceLoweringTest, TheDeferredPassWritesTheGBufferUnlessExcluded) {
+  Compiler compiler;
+  auto shader = [&](const std::string& options) {
+    return load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert" + options + "\n" +
+                                   kInput + "void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\nENDCG } }");
+  };
+  auto with = shader("");
+  ASSERT_TRUE(with->shader) << render_text(with->diags, with->sources);
+  std::string code = generated_text(*with, "DEFERRED");
+  ASSERT_FALSE(code.empty());
+  EXPECT_NE(code.find("out half4 outGBuffer0 : SV_Target0"), std::string::npos) << code;
+  EXPECT_NE(code.find("out half4 outEmission : SV_Target3"), std::string::npos) << code;
+  EXPECT_NE(code.find("LightingLambert_GI(o, giInput, gi);"), std::string::npos) << code;
+  EXPECT_NE(code.find("outEmission = LightingLambert_Deferred(o, gi, outGBuffer0, outGBuffer1, outGBuffer2);"),
+            std::string::npos) << code;
+  EXPECT_EQ(code.find("UNITY_FOG"), std::string::npos) << code;
+  EXPECT_EQ(code.find("_ShadowCoord"), std::string::npos) << code;
+  Diagnostics diags;
+  CompileOptions options;
+  options.passes = {"DEFERRED"};
+  EXPECT_TRUE(compiler.compile(*with->shader, options, with->sources, diags)) << render_text(diags, with->sources);
+
+  auto without = shader(" exclude_path:deferred");
+  ASSERT_TRUE(without->shader) << render_text(without->diags, without->sources);
+  EXPECT_EQ(without->diags.size(), 0u);
+  EXPECT_TRUE(generated_text(*without, "DEFERRED").empty());
+  EXPECT_EQ(pass_summary(compiler, *without->shader).size(), 2u);  // FORWARD, FORWARD_DELTA
+}
+
 TEST(SurfaceLoweringTest, UnknownOptionIsAWarningNotAnError) {
   Compiler compiler;
   auto l = load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert sparkles\n" + kInput +
@@ -375,7 +410,7 @@ Fallback "Diffuse"
   const ir::SubShader& sub = l->shader->subshaders[0];
   std::vector<std::string> names;
   for (const ir::Pass& p : sub.passes) names.push_back(p.name + ":" + p.tag("LightMode"));
-  EXPECT_EQ(names, (std::vector<std::string>{"FORWARD:ForwardBase", "FORWARD_DELTA:ForwardAdd",
+  EXPECT_EQ(names, (std::vector<std::string>{"FORWARD:ForwardBase", "FORWARD_DELTA:ForwardAdd", "DEFERRED:Deferred",
                                              "ShadowCaster:ShadowCaster", "OUTLINE:", "FORWARD:ForwardBase"}));
   EXPECT_NE(generated_text(*l, "FORWARD #1").find("inner("), std::string::npos);
   EXPECT_NE(generated_text(*l, "FORWARD #2").find("outer("), std::string::npos);

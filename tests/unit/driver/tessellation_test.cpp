@@ -400,7 +400,7 @@ TEST(SurfaceTessellationTest, GeneratedPassesHaveHullAndDomainStages) {
   const package::Package& pkg = b->compiled->package;
   std::vector<std::string> names;
   for (const package::PackagePass& pass : pkg.passes) names.push_back(pass.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"FORWARD", "FORWARD_DELTA", "ShadowCaster"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"FORWARD", "FORWARD_DELTA", "DEFERRED", "ShadowCaster"}));
   for (const package::PackagePass& pass : pkg.passes) {
     ASSERT_FALSE(pass.variants.empty()) << pass.name;
     for (const package::PackageVariant& v : pass.variants) {

@@ -100,7 +100,10 @@ TEST_F(ShadowsTest, AShaderCastsTheShadowOfItsFallbackDiffuse) {
   ASSERT_FALSE(off.ldr.empty());
   EXPECT_LT(grey(diffuse, 32, 23) + 60, grey(diffuse, 32, 41));  // the floor behind the ball is in its shadow
   EXPECT_LT(std::abs(grey(off, 32, 23) - grey(off, 32, 41)), 8);  // no caster, no shadow
-  auto is_ball_caster = [](const DrawRecord& d) { return d.light_mode == "ShadowCaster" && d.object_index == 1 && d.drawn; };
+  // Into the light's map (the camera depth texture the screen-space pass reads draws it too).
+  auto is_ball_caster = [](const DrawRecord& d) {
+    return d.light_mode == "ShadowCaster" && d.object_index == 1 && d.drawn && d.light == "lights[0] (directional)";
+  };
   EXPECT_EQ(count_if(diffuse, is_ball_caster), 1u);
   EXPECT_EQ(count_if(off, is_ball_caster), 0u);
 }
@@ -142,10 +145,11 @@ TEST_F(ShadowsTest, AShadowedLightRendersOneMapWithOneCasterDrawPerCaster) {
                      has_keyword(d, "SHADOWS_DEPTH");
             }),
             2u);
+  // Skipped for the light's map and for the camera depth texture (the screen-space pass's input).
   EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
               return !d.drawn && d.object == "objects[2] (box)" && d.why.find("no ShadowCaster pass") != std::string::npos;
             }),
-            1u);
+            2u);
   EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
               return d.drawn && d.light_mode == "ForwardBase" && has_keyword(d, "SHADOWS_SCREEN");
             }),
@@ -153,6 +157,45 @@ TEST_F(ShadowsTest, AShadowedLightRendersOneMapWithOneCasterDrawPerCaster) {
   // Casters are submitted first: they fill the map the receivers sample.
   ASSERT_FALSE(f.draws.empty());
   EXPECT_EQ(f.draws[0].light_mode, "ShadowCaster");
+}
+
+// Unity's screen-space shadows: the directional light's receivers read one
+// mask the size of the frame, made from the camera depth texture by one
+// full-screen draw; the mask is what they would have looked up themselves
+// (the shadow tests above pass through it).
+TEST_F(ShadowsTest, ADirectionalLightsReceiversReadOneScreenSpaceMask) {
+  RenderedFrame f = render("screen_mask", ball_scene(sun(R"(, "shadows": "soft")")));
+  ASSERT_FALSE(f.ldr.empty());
+  EXPECT_EQ(f.stats.screen_shadow_masks, 1u);
+  EXPECT_EQ(f.stats.depth_texture_draws, 2u);  // floor and ball, from the camera
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return d.drawn && d.shader == "Hidden/Internal-ScreenSpaceShadows" && d.light == "lights[0] (directional)";
+            }),
+            1u);
+  EXPECT_EQ(count_if(f, [](const DrawRecord& d) {
+              return d.drawn && d.light_mode == "ForwardBase" && has_keyword(d, "SHADOWS_SCREEN");
+            }),
+            2u);
+  EXPECT_LT(grey(f, 32, 23) + 60, grey(f, 32, 41));
+}
+
+// As in Unity the mask holds the opaque objects only, so a transparent
+// object gets no SHADOWS_SCREEN (and says why); a scene without directional
+// shadows makes no mask and no camera depth texture.
+TEST_F(ShadowsTest, ATransparentObjectReceivesNoDirectionalShadowAndNoShadowNoMask) {
+  std::string glass = R"(, {"name": "glass", "mesh": "cube", "position": [0, 0.2, 1.2], "scale": 0.4,
+                          "material": {"shader": ")" + example_shader("SurfaceAlpha.shader") + "\"}}";
+  RenderedFrame f = render("transparent_receiver", ball_scene(sun(R"(, "shadows": "hard")"), glass));
+  ASSERT_FALSE(f.ldr.empty());
+  auto glass_base = std::find_if(f.draws.begin(), f.draws.end(), [](const DrawRecord& d) {
+    return d.drawn && d.light_mode == "ForwardBase" && d.object == "objects[2] (glass)";
+  });
+  ASSERT_NE(glass_base, f.draws.end());
+  EXPECT_FALSE(has_keyword(*glass_base, "SHADOWS_SCREEN"));
+  EXPECT_NE(glass_base->why.find("no shadows: transparent"), std::string::npos) << glass_base->why;
+  RenderedFrame plain = render("no_mask", ball_scene(sun("")));
+  EXPECT_EQ(plain.stats.screen_shadow_masks, 0u);
+  EXPECT_EQ(plain.stats.depth_texture_draws, 0u);
 }
 
 TEST_F(ShadowsTest, ASpotLightsShadowComesThroughItsForwardAddDraw) {

@@ -23,7 +23,7 @@ TEST_F(FacetcTest, AFallbackOnlyShaderCompilesToItsFallbacksPasses) {
   auto json = nlohmann::json::parse(dump.out);
   std::vector<std::string> passes;
   for (const auto& p : json["passes"]) passes.push_back(p["name"]);
-  EXPECT_EQ(passes, (std::vector<std::string>{"FORWARD", "FORWARD_DELTA", "ShadowCaster"}));  // Legacy Diffuse's
+  EXPECT_EQ(passes, (std::vector<std::string>{"FORWARD", "FORWARD_DELTA", "DEFERRED", "ShadowCaster"}));  // Legacy Diffuse's
   EXPECT_EQ(json["shader"]["fallback"], "Diffuse");
 }
 

@@ -87,9 +87,12 @@ struct DrawRecord {
 struct RenderStats {
   uint64_t draws = 0;               // shadow-map and depth-texture draws included
   uint64_t additive_draws = 0;
+  uint64_t gbuffer_draws = 0;    // the deferred path's Deferred passes into the G-buffer
+  uint64_t deferred_lights = 0;  // the deferred path's light draws (one a light)
   uint64_t shadow_maps = 0;         // lights whose shadow map was rendered
   uint64_t shadow_draws = 0;        // ShadowCaster draws into them
   uint64_t depth_texture_draws = 0; // ShadowCaster draws into the camera depth texture (objects sample it)
+  uint64_t screen_shadow_masks = 0; // directional lights' screen-space shadow masks (one full-screen draw each)
   uint64_t triangles = 0;
   uint64_t grabs = 0;              // screen copies into GrabPass textures, in the last frame
   uint64_t pipelines = 0;          // graphics pipelines created

@@ -46,6 +46,10 @@ struct SceneCamera {
   Vec4 clear_color{0.19f, 0.30f, 0.47f, 1};  // sRGB-authored, as in Unity
   bool clear_sky = false;  // "clear": "sky": the ambient's procedural sky behind everything
   float exposure = 1;
+  // Unity's Camera.renderingPath: deferred draws the opaque objects whose
+  // shader has a LightMode Deferred pass into a G-buffer and lights them
+  // there; everything else is drawn forward after it.
+  bool deferred = false;
 };
 
 // A texture a property names: a built-in ("white", "black", "gray", "bump",
