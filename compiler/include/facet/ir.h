@@ -205,6 +205,21 @@ struct Shader {
   const Property* find_property(std::string_view name) const;
 };
 
+// The texture `GrabPass { }` fills; a named GrabPass fills its name.
+inline constexpr const char* kGrabTexture = "_GrabTexture";
+
+// The textures of the GrabPasses among passes [from, to) of `sub`, in order:
+// what is grabbed before the pass at `to` when the pass drawn before it is
+// at from - 1.
+inline std::vector<std::string> grab_textures(const SubShader& sub, size_t from, size_t to) {
+  std::vector<std::string> out;
+  for (size_t i = from; i < to && i < sub.passes.size(); ++i) {
+    if (sub.passes[i].kind != PassKind::grab_pass) continue;
+    out.push_back(sub.passes[i].grab_texture.empty() ? kGrabTexture : sub.passes[i].grab_texture);
+  }
+  return out;
+}
+
 // The file a program of `shader` was written in (Program::home_file).
 inline FileId program_file(const Shader& shader, const Program& program) {
   return program.home_file != kNoFile ? program.home_file : shader.file;

@@ -20,7 +20,7 @@ namespace facet::package {
 
 // 3: the build record (shard i of N, build id); 2: reflections shared
 // between stages (1: inline).
-inline constexpr uint32_t kFormatVersion = 4;
+inline constexpr uint32_t kFormatVersion = 5;
 
 struct PackageStage {
   Stage stage = Stage::vertex;
@@ -40,6 +40,10 @@ struct PackagePass {
   ir::RenderState state;
   variants::KeywordSpace keywords;
   std::vector<PackageVariant> variants;  // sorted by key
+  // The textures of the GrabPasses written between the package's pass
+  // before this one (or the SubShader's start) and this one, in order: the
+  // screen is copied into each before this pass draws (format 5; none before).
+  std::vector<std::string> grab_before;
 };
 
 // Which part of which build a package is, so that --merge can tell whether

@@ -77,7 +77,7 @@ Result<std::vector<SelectedPass>> Compiler::select_passes(const ir::Shader& shad
     if (!pass_requested(pass, i, options.passes)) continue;
     const ir::Pass* source = &pass;
     if (pass.kind == ir::PassKind::grab_pass) {
-      diags.add(DiagId::driver_grabpass_skipped, pass.span, "GrabPass has no program; it is not compiled");
+      diags.add(DiagId::driver_grabpass_skipped, pass.span, "GrabPass has no program to compile; the package records it before the pass that follows it");
       continue;
     }
     if (pass.kind == ir::PassKind::use_pass) {

@@ -95,11 +95,13 @@ Json variant(const PackageVariant& v) {
 Json pass(const PackagePass& p) {
   Json list = Json::array();
   for (const PackageVariant& v : p.variants) list.push_back(variant(v));
-  return Json{{"name", p.name},
-              {"tags", tags_json(p.tags)},
-              {"state", render_state_json(p.state)},
-              {"keywords", keyword_space(p.keywords)},
-              {"variants", std::move(list)}};
+  Json out{{"name", p.name},
+           {"tags", tags_json(p.tags)},
+           {"state", render_state_json(p.state)},
+           {"keywords", keyword_space(p.keywords)},
+           {"variants", std::move(list)}};
+  if (!p.grab_before.empty()) out["grab_before"] = p.grab_before;
+  return out;
 }
 
 Json blob(const std::vector<uint32_t>& words) {

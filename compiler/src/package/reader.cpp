@@ -279,13 +279,21 @@ std::vector<ir::Property> decode_properties(Decoder& d) {
   return out;
 }
 
-std::vector<PackagePass> decode_passes(Decoder& d) {
+std::vector<PackagePass> decode_passes(Decoder& d, uint32_t version) {
   uint32_t n = d.count(kPassMinSize, "pass");
   std::vector<PackagePass> out(n);
   for (uint32_t i = 0; i < n && d.ok(); ++i) {
     out[i].name = d.str();
     out[i].tags = decode_tags(d);
     out[i].state = decode_state(d);
+    if (version < 5) continue;  // format 5: the GrabPasses before the pass
+    uint32_t grabs = d.count(4, "GrabPass texture");
+    for (uint32_t g = 0; g < grabs && d.ok(); ++g) {
+      uint64_t at = d.offset();
+      std::string texture = d.str();
+      if (d.ok() && texture.empty()) d.fail_at(at, "empty GrabPass texture name");
+      out[i].grab_before.push_back(std::move(texture));
+    }
   }
   return out;
 }
@@ -448,7 +456,7 @@ Package decode_sections(std::span<const uint8_t> bytes, const SectionTable& tabl
   p.properties = decode_properties(properties);
   properties.expect_end("properties");
   Decoder passes = section(bytes, table, SectionId::passes, ctx);
-  p.passes = decode_passes(passes);
+  p.passes = decode_passes(passes, codec::get_u32(bytes, codec::kVersionOffset));
   passes.expect_end("passes");
   Decoder keywords = section(bytes, table, SectionId::keywords, ctx);
   decode_keywords(keywords, p.passes, codec::get_u32(bytes, codec::kVersionOffset));

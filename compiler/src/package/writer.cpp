@@ -106,6 +106,8 @@ void encode_passes(Encoder& e, const std::vector<PackagePass>& passes) {
     e.str(p.name);
     encode_tags(e, p.tags);
     encode_state(e, p.state);
+    e.count(p.grab_before.size());
+    for (const std::string& texture : p.grab_before) e.str(texture);
   }
 }
 

@@ -199,18 +199,13 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
 namespace {
 
 // The textures of the GrabPasses written between the selected pass before
-// `p` (or the SubShader's start) and `p`. A package keeps no GrabPass.
+// `p` (or the SubShader's start) and `p`; a package records them per pass.
 std::vector<std::string> grab_passes_before(const ShaderAsset& asset, size_t p) {
-  std::vector<std::string> out;
+  if (asset.package) return p < asset.package->passes.size() ? asset.package->passes[p].grab_before : std::vector<std::string>{};
   const SelectedPass& sel = asset.passes[p];
-  if (sel.subshader >= asset.shader.subshaders.size()) return out;
-  const std::vector<ir::Pass>& written = asset.shader.subshaders[sel.subshader].passes;
+  if (sel.subshader >= asset.shader.subshaders.size()) return {};
   size_t from = p == 0 ? 0 : asset.passes[p - 1].pass + 1;
-  for (size_t i = from; i < sel.pass && i < written.size(); ++i) {
-    if (written[i].kind != ir::PassKind::grab_pass) continue;
-    out.push_back(written[i].grab_texture.empty() ? kGrabTexture : written[i].grab_texture);
-  }
-  return out;
+  return ir::grab_textures(asset.shader.subshaders[sel.subshader], from, sel.pass);
 }
 
 struct Builder {

@@ -66,8 +66,7 @@ struct Draw {
   std::vector<std::string> grab_before;
 };
 
-// The texture `GrabPass { }` fills.
-inline constexpr const char* kGrabTexture = "_GrabTexture";
+using ir::kGrabTexture;  // the texture `GrabPass { }` fills
 
 // "lights[1] (point)"
 std::string light_description(const Scene& scene, size_t light);

@@ -27,9 +27,8 @@ Result<GrabPlan, RenderError> plan_grabs(const Context& context, const Scene& sc
     for (const std::string& name : declared) {
       if (samples(d, name) && !filled.count(name)) {
         return unexpected(RenderError{fmt::format(
-            "{}: {}: pass '{}' samples {}, but no GrabPass copied the screen into it before this draw{}", scene.path,
-            d.record.object, d.record.pass, name,
-            d.variant->package.passes.empty() ? " (a package does not record GrabPass: draw the .shader)" : "")});
+            "{}: {}: pass '{}' samples {}, but no GrabPass copied the screen into it before this draw", scene.path,
+            d.record.object, d.record.pass, name)});
       }
     }
   }

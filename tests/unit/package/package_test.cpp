@@ -68,7 +68,7 @@ auto fields(const StageReflection& r) {
 }
 auto fields(const PackageStage& s) { return std::tie(s.stage, s.blob, s.reflection); }
 auto fields(const PackageVariant& v) { return std::tie(v.key.choice, v.keywords, v.stages); }
-auto fields(const PackagePass& p) { return std::tie(p.name, p.tags, p.state, p.keywords, p.variants); }
+auto fields(const PackagePass& p) { return std::tie(p.name, p.tags, p.state, p.keywords, p.variants, p.grab_before); }
 auto fields(const Package& p) {
   return std::tie(p.version, p.shader_name, p.properties, p.subshader_tags, p.lod, p.fallback, p.custom_editor,
                   p.passes, p.spirv_blobs);
@@ -240,6 +240,7 @@ Package rich_package() {
   p.fallback = "Diffuse";
   p.custom_editor = "RichShaderGUI";
   PackagePass forward{"FORWARD", {{"LightMode", "ForwardBase", span(13)}}, rich_state(), rich_keywords(), {}};
+  forward.grab_before = {"_GrabTexture", "_SharedGrab"};
   forward.variants = {
       variant({0, 0, 0, 0}, {"SHADOWS_OFF", "_A"}, 0, 1),
       variant({0, 1, 1, variants::kOffChoice}, {"_NORMALMAP", "SHADOWS_ON"}, 0, 2),
@@ -341,6 +342,12 @@ TEST_F(PackageRoundTripTest, SpansReadBackAsDefault) {
   EXPECT_EQ(back->passes[0].state.cull->span, SourceSpan{});
   EXPECT_EQ(back->passes[0].state.stencil->span, SourceSpan{});
   EXPECT_EQ(back->passes[0].keywords.sets[0].span, SourceSpan{});
+}
+
+// Format 5: the GrabPasses before a pass; a texture needs a name.
+TEST_F(PackageRoundTripTest, AnEmptyGrabPassTextureNameIsCorrupt) {
+  package_.passes[0].grab_before = {"_GrabTexture", ""};
+  EXPECT_NE(read_error(write_package(package_)).find("empty GrabPass texture name"), std::string::npos);
 }
 
 TEST_F(PackageRoundTripTest, VersionIsTheFormatVersion) {
@@ -655,7 +662,7 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   p.passes[0].variants = {{{{1}}, {"_ON"}, {{Stage::fragment, 0, {}}}}};
   p.spirv_blobs = {{}};
   const char* expected = R"({
-  "format_version": 4,
+  "format_version": 5,
   "shader": {
     "name": "S",
     "lod": 0,

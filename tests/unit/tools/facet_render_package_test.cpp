@@ -57,6 +57,45 @@ TEST_F(FacetRenderPackageTest, ASceneOfPackagesIsPixelIdenticalToTheSceneOfItsSh
   EXPECT_TRUE(a == b) << "the two images differ";
 }
 
+// A package records the GrabPasses before each pass (format 5): the
+// refraction scene of two GrabPass glasses draws from packages as from
+// its shaders, grabs included.
+TEST_F(FacetRenderPackageTest, GrabPassesDrawFromAPackageAsFromTheShader) {
+  build_package("GrabRefraction.shader", "Grab.facetpkg");
+  FacetcRun unlit = facetc({std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Unlit/Texture.shader", "-o", "Unlit.facetpkg"});
+  ASSERT_EQ(unlit.exit_code, 0) << unlit.err;
+  FacetcRun dump = facetc({"--dump", "Grab.facetpkg"});
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  EXPECT_EQ(nlohmann::json::parse(dump.out)["passes"][0]["grab_before"], nlohmann::json({"_GrabTexture"}));
+  auto scene = nlohmann::json::parse(read_all(fs::path(FACET_SOURCE_DIR) / "examples/scenes/grab_refraction.json"));
+  auto packaged = scene;
+  for (size_t i = 0; i < scene["objects"].size(); ++i) {
+    const std::string shader = scene["objects"][i]["material"]["shader"];
+    const bool grab = shader.find("GrabRefraction") != std::string::npos;
+    scene["objects"][i]["material"]["shader"] =
+        grab ? example("GrabRefraction.shader") : std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Unlit/Texture.shader";
+    packaged["objects"][i]["material"]["shader"] = grab ? "Grab.facetpkg" : "Unlit.facetpkg";
+    for (auto* s : {&scene, &packaged}) {
+      auto& material = (*s)["objects"][i]["material"];
+      if (!material.contains("properties") || !material["properties"].contains("_MainTex")) continue;
+      auto& props = material["properties"];  // the backdrop's checker, found from the test's folder
+      const std::string file = props["_MainTex"]["texture"];
+      props["_MainTex"]["texture"] = (fs::path(FACET_SOURCE_DIR) / "examples/textures" / fs::path(file).filename()).string();
+    }
+  }
+  write_all(dir_ / "grab_sources.json", scene.dump(2));
+  write_all(dir_ / "grab_packages.json", packaged.dump(2));
+  FacetcRun sources = facet_render({"grab_sources.json", "-o", "grab_sources.png", "--validation", "--stats"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  FacetcRun packages = facet_render({"grab_packages.json", "-o", "grab_packages.png", "--validation", "--stats"});
+  ASSERT_EQ(packages.exit_code, 0) << packages.err;
+  EXPECT_THAT(packages.out, HasSubstr("GrabPass copies of the screen: 2"));
+  EXPECT_THAT(packages.out, HasSubstr("variants compiled: 0,"));
+  std::string a = read_all(dir_ / "grab_sources.png"), b = read_all(dir_ / "grab_packages.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the two images differ";
+}
+
 TEST_F(FacetRenderPackageTest, AMissingVariantIsTheClosestMatchWithOneWarningOrAStrictError) {
   // The ForwardAdd pass without its point-light variants.
   write_all(dir_ / "strip.json", R"({"strip": [{"always_off": ["POINT"], "pass": "FORWARD_DELTA"}]})");
