@@ -48,6 +48,9 @@ Result<void, RenderError> make_deferred_targets(const Context& context, const Im
                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL));
   gbuffer.push_back(attachment(depth.desc().format, false, VK_IMAGE_LAYOUT_UNDEFINED,
                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+  // The stencil, cleared here, is kept for the forward part's Stencil blocks.
+  gbuffer.back().stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  gbuffer.back().stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
   views.push_back(color.view());
   views.push_back(depth.view());
   Result<VkRenderPass, RenderError> pass = make_single_pass(out.device, gbuffer, true, "G-buffer");

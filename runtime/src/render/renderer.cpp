@@ -101,11 +101,14 @@ class UniformArena {
   VkDeviceSize used_ = 0, align_ = 256;
 };
 
-VkFormat depth_format(const Context& context) {
+// D32 with stencil where the device has it (and, for a depth the frame
+// samples, can sample it), else D32 without stencil.
+VkFormat depth_format(const Context& context, bool sampled) {
   VkFormatProperties p{};
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), VK_FORMAT_D32_SFLOAT_S8_UINT, &p);
-  bool stencil = p.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
-  return stencil ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
+  VkFormatFeatureFlags needs = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                               (sampled ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT : 0);
+  return (p.optimalTilingFeatures & needs) == needs ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
 }
 
 // How a render pass of the scene begins and ends. A frame with GrabPasses
@@ -565,7 +568,7 @@ struct Recorder {
             if (!clamp) return unexpected(error(clamp.error()));
             info.sampler = *clamp;
           }
-          info.imageView = (*image)->view();
+          info.imageView = (*image)->sample_view();
           info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
           type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
                                                                 : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
@@ -766,15 +769,15 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     d.record.state = describe(d.state) + " (at the far plane: behind the deferred objects)";
   }
   // The camera depth texture is the depth buffer itself, kept when an image
-  // effect samples it; D32 without stencil, so that it can be sampled (as
-  // the deferred light pass samples it).
+  // effect samples it (as the deferred light pass samples it), through its
+  // depth-only view (Image::sample_view).
   bool depth_sampled = post && std::any_of(post->list.draws.begin(), post->list.draws.end(),
                                            [](const Draw& d) { return samples(d, "_CameraDepthTexture"); });
   const bool depth_readable = depth_sampled || deferred;
 
   FrameObjects fo;
   fo.device = context.device();
-  VkFormat depth = depth_readable ? VK_FORMAT_D32_SFLOAT : depth_format(context);
+  VkFormat depth = depth_format(context, depth_readable);
   VkResultOf<Image> color = create_image(context, {.width = uint32_t(frame.width), .height = uint32_t(frame.height),
                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |

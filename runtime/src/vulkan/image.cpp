@@ -109,6 +109,7 @@ Image::Image(Image&& other) noexcept
       image_(std::exchange(other.image_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
       view_(std::exchange(other.view_, VK_NULL_HANDLE)),
+      depth_view_(std::exchange(other.depth_view_, VK_NULL_HANDLE)),
       desc_(other.desc_) {}
 
 Image& Image::operator=(Image&& other) noexcept {
@@ -118,6 +119,7 @@ Image& Image::operator=(Image&& other) noexcept {
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    depth_view_ = std::exchange(other.depth_view_, VK_NULL_HANDLE);
     desc_ = other.desc_;
   }
   return *this;
@@ -126,10 +128,12 @@ Image& Image::operator=(Image&& other) noexcept {
 void Image::reset() {
   if (!device_) return;
   if (view_) vkDestroyImageView(device_, view_, nullptr);
+  if (depth_view_) vkDestroyImageView(device_, depth_view_, nullptr);
   if (image_) vkDestroyImage(device_, image_, nullptr);
   if (memory_) vkFreeMemory(device_, memory_, nullptr);
   device_ = VK_NULL_HANDLE;
   view_ = VK_NULL_HANDLE;
+  depth_view_ = VK_NULL_HANDLE;
   image_ = VK_NULL_HANDLE;
   memory_ = VK_NULL_HANDLE;
 }
@@ -200,6 +204,13 @@ VkResultOf<Image> create_image(const Context& context, const ImageDesc& desc) {
   view.subresourceRange = {aspect_of(desc.format), 0, desc.mips, 0, desc.layers};
   if (VkResult r = vkCreateImageView(image.device_, &view, nullptr, &image.view_); r != VK_SUCCESS) {
     return vk_failure(VkErrorCode::object_failed, "cannot create an image view", r);
+  }
+  const bool depth_stencil = aspect_of(desc.format) == (VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT);
+  if (depth_stencil && (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
+    view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    if (VkResult r = vkCreateImageView(image.device_, &view, nullptr, &image.depth_view_); r != VK_SUCCESS) {
+      return vk_failure(VkErrorCode::object_failed, "cannot create a depth view", r);
+    }
   }
   return image;
 }

@@ -93,13 +93,13 @@ TEST_F(StagesTest, AStencilMaskDrawsTheSecondObjectOnlyWhereTheFirstWroteTheRefe
   const std::string mask = unlit_with("StencilMask.shader",
                                       "ColorMask 0 ZWrite Off Stencil { Ref 1 Comp Always Pass Replace }");
   const std::string masked = unlit_with("StencilMasked.shader", "Stencil { Ref 1 Comp Equal }");
-  auto scene = [&](const std::string& quad_shader) {
+  auto scene = [&](const std::string& quad_shader, const std::string& camera = "", const std::string& more = "") {
     return R"({"width": 64, "height": 64,
-      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "fov": 40, "clear_color": [0, 0, 0]},
+      "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "fov": 40, "clear_color": [0, 0, 0])" + camera + R"(},
       "lights": [], "objects": [
         {"mesh": "sphere", "material": {"shader": ")" + mask + R"("}},
         {"mesh": "quad", "position": [0, 0, 1], "scale": 4,
-         "material": {"shader": ")" + quad_shader + R"(", "queue": 2001}}]})";
+         "material": {"shader": ")" + quad_shader + R"(", "queue": 2001}})" + more + "]}";
   };
   RenderedFrame plain = render("stencil_plain", scene(example_shader("Unlit.shader")));
   RenderedFrame stenciled = render("stencil_masked", scene(masked));
@@ -107,6 +107,16 @@ TEST_F(StagesTest, AStencilMaskDrawsTheSecondObjectOnlyWhereTheFirstWroteTheRefe
   EXPECT_EQ(covered(plain), 64u * 64u);  // the quad fills the view
   EXPECT_GT(covered(stenciled), 300u);  // the sphere's disk, about 430 pixels
   EXPECT_LT(covered(stenciled), 64u * 64u / 4);
+  // A deferred frame samples its depth (D32S8 through a depth-only view):
+  // its stencil still masks the forward part.
+  const std::string standard = std::string(FACET_SOURCE_DIR) + "/stdlib/Shaders/Standard.shader";
+  RenderedFrame deferred = render("stencil_deferred",
+                                  scene(masked, R"(, "rendering_path": "deferred")",
+                                        R"(, {"mesh": "cube", "position": [5, 5, 5], "material": {"shader": ")" +
+                                            standard + R"("}})"));
+  ASSERT_FALSE(deferred.ldr.empty());
+  EXPECT_EQ(deferred.stats.gbuffer_draws, 1u);
+  EXPECT_EQ(covered(deferred), covered(stenciled));
 }
 
 }  // namespace

@@ -45,6 +45,9 @@ class Image {
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
+  // The view to sample through: for a sampled depth-stencil image its depth
+  // alone (a sampled view has one aspect); otherwise view().
+  VkImageView sample_view() const { return depth_view_ ? depth_view_ : view_; }
   const ImageDesc& desc() const { return desc_; }
   VkImageAspectFlags aspect() const;
 
@@ -56,6 +59,7 @@ class Image {
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
+  VkImageView depth_view_ = VK_NULL_HANDLE;
   ImageDesc desc_;
 };
 
