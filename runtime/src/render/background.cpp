@@ -20,19 +20,13 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
   source.name = scene.environment ? "environment" : "procedural sky";
   source.json_path = "camera.clear";
   source.mesh = "quad";
-  if (!library.compiler() || library.compiler()->stdlib_dir.empty()) {
-    return unexpected(RenderError{fmt::format(
-        "{}: camera.clear: the sky is the stdlib's {}, which needs the development layer (facet_shader_compiler); "
-        "this renderer draws packages only",
-        scene.path, scene.environment ? "EnvironmentSky.shader" : "ProceduralSky.shader")});
-  }
   source.material.json_path = "camera.clear";
   if (scene.environment) {
     // Mip 0 of unity_SpecCube0: the environment cube is bound to every Cube slot nothing else fills.
-    source.material.shader = library.compiler()->stdlib_dir + "/Shaders/EnvironmentSky.shader";
+    source.material.shader = "EnvironmentSky.shader";
   } else {
     const SceneSky& sky = *scene.sky;
-    source.material.shader = library.compiler()->stdlib_dir + "/Shaders/ProceduralSky.shader";
+    source.material.shader = "ProceduralSky.shader";
     source.material.properties = {colour("_Zenith", "zenith", sky.zenith), colour("_Horizon", "horizon", sky.horizon),
                                   colour("_Ground", "ground", sky.ground),
                                   {"_Intensity", "ambient.sky.intensity", {sky.intensity}, std::nullopt}};
@@ -44,11 +38,12 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
       source.material.properties.push_back({"_SunCos", "ambient.sky.sun", {sun->cos_radius}, std::nullopt});
     }
   }
-  Result<ShaderAsset*, std::string> shader = library.load(source.material.shader);
+  Result<ShaderAsset*, std::string> shader = library.load_built_in(source.material.shader);
   if (!shader) {
-    return unexpected(RenderError{fmt::format("{}: camera.clear: the sky shader {} does not compile:\n{}", scene.path,
-                                              source.material.shader, shader.error())});
+    return unexpected(RenderError{fmt::format("{}: camera.clear: the sky shader, the stdlib's {}, does not load:\n{}",
+                                              scene.path, source.material.shader, shader.error())});
   }
+  source.material.shader = (*shader)->path;
   ObjectState s;
   s.index = objects.size();
   s.scene = &source;

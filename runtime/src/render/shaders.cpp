@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "facet/package_file.h"
+#include "render/built_in_shaders.h"
 #include "facet/support/render_queue.h"
 #include "facet/support/text.h"
 
@@ -81,6 +82,26 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   asset->queue = source->queue;
   ShaderAsset* raw = asset.get();
   shaders_[path] = std::move(asset);
+  return raw;
+}
+
+Result<ShaderAsset*, std::string> ShaderLibrary::load_built_in(const std::string& file) {
+  if (compiler_ && compiler_->load && !compiler_->stdlib_dir.empty()) return load(compiler_->stdlib_dir + "/Shaders/" + file);
+  const std::string key = "<built-in>/" + file;
+  used_.insert(key);
+  if (auto it = shaders_.find(key); it != shaders_.end()) return it->second.get();
+  std::span<const uint8_t> bytes = built_in_package(file);
+  if (bytes.empty()) return unexpected(fmt::format("{} is not one of the renderer's built-in shaders", file));
+  Timer timer{seconds_};
+  auto asset = std::make_unique<ShaderAsset>();
+  asset->path = key;
+  Diagnostics diags;
+  Result<package::Package> pkg = package::read_package(bytes, diags);
+  if (!pkg) return unexpected(key + ": " + render_text(diags, asset->sources));
+  ++loads_;
+  adopt_package(*asset, std::move(*pkg));
+  ShaderAsset* raw = asset.get();
+  shaders_[key] = std::move(asset);
   return raw;
 }
 

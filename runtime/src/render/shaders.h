@@ -72,6 +72,10 @@ class ShaderLibrary {
   // A .facetpkg built by facetc, or a .shader through the ShaderCompiler.
   // Errors are the compiler's or the package reader's diagnostics, as text.
   Result<ShaderAsset*, std::string> load(const std::string& path);
+  // The stdlib's Shaders/<file>, which the renderer draws by itself: its
+  // .shader through the development layer (an edited stdlib shows), else the
+  // package built into facet_render (built_in_shaders.h).
+  Result<ShaderAsset*, std::string> load_built_in(const std::string& file);
   // The variant of pass `pass` (an index into asset.passes) with this key,
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
   Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,

@@ -4,7 +4,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "facet/runtime/shader_compiler.h"
 #include "facet/runtime/vulkan_context.h"
 
 namespace facet::runtime {
@@ -123,22 +122,17 @@ Result<void, RenderError> make_screen_pass_object(const Context& context, const 
                                                   const CameraMatrices& camera, const std::string& file,
                                                   const std::string& what, const std::string& json_path,
                                                   ScreenPassObject& out) {
-  if (!library.compiler() || library.compiler()->stdlib_dir.empty()) {
-    return unexpected(error(fmt::format("{}: {}: {} is the stdlib's {}, which needs the development layer "
-                                        "(facet_shader_compiler); this renderer draws packages only",
-                                        scene.path, json_path, what, file)));
-  }
   SceneObject& source = out.source;
   source.name = what;
   source.json_path = json_path;
   source.mesh = "quad";
   source.material.json_path = json_path;
-  source.material.shader = library.compiler()->stdlib_dir + "/Shaders/" + file;
-  Result<ShaderAsset*, std::string> shader = library.load(source.material.shader);
+  Result<ShaderAsset*, std::string> shader = library.load_built_in(file);
   if (!shader) {
-    return unexpected(error(fmt::format("{}: {}: the shader of {}, {}, does not compile:\n{}", scene.path, json_path,
-                                        what, source.material.shader, shader.error())));
+    return unexpected(error(fmt::format("{}: {}: the shader of {}, the stdlib's {}, does not load:\n{}", scene.path,
+                                        json_path, what, file, shader.error())));
   }
+  source.material.shader = (*shader)->path;
   if ((*shader)->passes.empty()) {
     return unexpected(error(fmt::format("{}: {}: the shader of {}, {}, has no pass", scene.path, json_path, what,
                                         source.material.shader)));

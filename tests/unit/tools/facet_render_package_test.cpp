@@ -470,6 +470,36 @@ TEST_F(FacetPlayTest, RendersASceneOfPackagesPixelIdenticalToTheSceneOfItsShader
   EXPECT_TRUE(a == b) << "the two images differ";
 }
 
+// The renderer's own stdlib shaders (the procedural sky, the screen-space
+// shadow pass, the deferred light pass) are built into facet_render as
+// packages: the runtime alone draws a deferred frame with a sky and a
+// shadowed sun as the development layer does from their .shader files.
+TEST_F(FacetPlayTest, DrawsTheSkyScreenSpaceShadowsAndDeferredLightsFromItsBuiltInPackages) {
+  build_package("SurfaceStandard.shader", "Standard.facetpkg");
+  auto scene = [](const std::string& shader) {
+    std::string object = R"(, "material": {"shader": ")" + shader + R"(", "properties": {"_Glossiness": 0.3}}})";
+    return R"({"width": 64, "height": 48,
+      "camera": {"position": [0, 2, -4], "look_at": [0, 0.3, 0], "clear": "sky", "rendering_path": "deferred"},
+      "ambient": {"sky": {"zenith": [0.3, 0.45, 0.8], "horizon": [0.8, 0.8, 0.8], "ground": [0.3, 0.25, 0.2]}},
+      "lights": [{"type": "directional", "rotation": [50, 30, 0], "shadows": "hard"}],
+      "objects": [{"mesh": "plane", "scale": 0.5)" + object + R"(, {"mesh": "sphere", "position": [0, 0.6, 0])" +
+           object + "]}";
+  };
+  write_all(dir_ / "sources.json", scene(example("SurfaceStandard.shader")));
+  write_all(dir_ / "packages.json", scene("Standard.facetpkg"));
+  FacetcRun sources = facet_render({"sources.json", "-o", "sources.png", "--validation", "--stats"});
+  ASSERT_EQ(sources.exit_code, 0) << sources.err;
+  EXPECT_THAT(sources.out, HasSubstr("deferred: 2 G-buffer draws, 1 light draws"));
+  EXPECT_THAT(sources.out, HasSubstr("screen-space shadow masks: 1"));
+  FacetcRun play = facet_play({"packages.json", "-o", "play.png", "--validation"});
+  ASSERT_EQ(play.exit_code, 0) << play.err;
+  EXPECT_EQ(play.err, "");
+  EXPECT_THAT(play.out, HasSubstr("variants compiled: 0"));
+  std::string a = read_all(dir_ / "sources.png"), b = read_all(dir_ / "play.png");
+  ASSERT_FALSE(a.empty());
+  EXPECT_TRUE(a == b) << "the two images differ";
+}
+
 TEST_F(FacetPlayTest, AShaderInTheSceneIsAnErrorNamingIt) {
   build_package("Diffuse.shader", "Diffuse.facetpkg");
   write_scene("mixed.json", "Diffuse.facetpkg", example("PhongMultiLight.shader"));
