@@ -941,6 +941,15 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     frame.stats.triangles += *shadow_triangles;
     VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
     VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
+    // Binds `mesh` and draws all of it.
+    auto draw_mesh = [&](const GpuMesh& mesh) {
+      VkBuffer vb = mesh.vertices.handle();
+      VkDeviceSize offset = 0;
+      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
+      vkCmdBindIndexBuffer(commands, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(commands, mesh.index_count, 1, 0, 0, 0);
+      frame.stats.triangles += mesh.index_count / 3;
+    };
     // Draws `draws` [first, last) with `pipelines` in a render pass already begun.
     auto draw_all = [&](const std::vector<Draw>& draws, const std::vector<VkPipeline>& draw_pipelines,
                         const std::vector<ObjectState>& owners, size_t first = 0, size_t last = SIZE_MAX) {
@@ -954,12 +963,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
           failed = bound.error();
           break;
         }
-        VkBuffer vb = object.mesh->vertices.handle();
-        VkDeviceSize offset = 0;
-        vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(commands, object.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
-        frame.stats.triangles += object.mesh->index_count / 3;
+        draw_mesh(*object.mesh);
       }
     };
     for (size_t i = 0; i < screen_shadows.list.draws.size() && !failed; ++i) {
@@ -1052,12 +1056,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
         break;
       }
       if (captured) options.capture->draws.push_back(std::move(*captured));
-      VkBuffer vb = object.mesh->vertices.handle();
-      VkDeviceSize offset = 0;
-      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
-      vkCmdBindIndexBuffer(commands, object.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(commands, object.mesh->index_count, 1, 0, 0, 0);
-      frame.stats.triangles += object.mesh->index_count / 3;
+      draw_mesh(*object.mesh);
       if (deferred && object.background) vkCmdSetViewport(commands, 0, 1, &viewport);
     }
     vkCmdEndRenderPass(commands);
@@ -1077,14 +1076,10 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
       if (Result<void, RenderError> bound = recorder.bind(commands, post->list.draws[i], post->steps[i], frame_values);
           !bound) {
         failed = bound.error();
+      } else {
+        draw_mesh(*quad);
       }
-      VkBuffer vb = quad->vertices.handle();
-      VkDeviceSize offset = 0;
-      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
-      vkCmdBindIndexBuffer(commands, quad->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-      if (!failed) vkCmdDrawIndexed(commands, quad->index_count, 1, 0, 0, 0);
       vkCmdEndRenderPass(commands);
-      frame.stats.triangles += quad->index_count / 3;
       result = &targets.images[i % 2];
     }
     if (post) transition(commands, *result, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);

@@ -243,14 +243,17 @@ INSTANTIATE_TEST_SUITE_P(
                 "the vertex modifier 'vert' is not defined"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// A Lambert surface shader writing white albedo, with `options` after the model.
+std::unique_ptr<Loaded> lambert_with(const Compiler& compiler, const std::string& options) {
+  return load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert" + options + "\n" +
+                                 kInput + "void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\nENDCG } }");
+}
+
 // ForwardBase adds Shade4PointLights under VERTEXLIGHT_ON in the vertex
 // stage; novertexlights removes the keyword and the code, as in Unity.
 TEST(SurfaceLoweringTest, ForwardBaseLightsFourPointLightsPerVertexUnlessNoVertexLights) {
   Compiler compiler;
-  auto shader = [&](const std::string& options) {
-    return load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert" + options + "\n" +
-                                   kInput + "void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\nENDCG } }");
-  };
+  auto shader = [&](const std::string& options) { return lambert_with(compiler, options); };
   auto with = shader("");
   ASSERT_TRUE(with->shader) << render_text(with->diags, with->sources);
   std::string code = generated_text(*with, "FORWARD");
@@ -286,10 +289,7 @@ TEST(SurfaceLoweringTest, ForwardBaseLightsFourPointLightsPerVertexUnlessNoVerte
 // and no shadow coordinates; exclude_path:deferred leaves it out.
 TEST(SurfaceLoweringTest, TheDeferredPassWritesTheGBufferUnlessExcluded) {
   Compiler compiler;
-  auto shader = [&](const std::string& options) {
-    return load_text(compiler, "Shader \"T\" { SubShader { CGPROGRAM\n#pragma surface surf Lambert" + options + "\n" +
-                                   kInput + "void surf(Input IN, inout SurfaceOutput o) { o.Albedo = 1; }\nENDCG } }");
-  };
+  auto shader = [&](const std::string& options) { return lambert_with(compiler, options); };
   auto with = shader("");
   ASSERT_TRUE(with->shader) << render_text(with->diags, with->sources);
   std::string code = generated_text(*with, "DEFERRED");
