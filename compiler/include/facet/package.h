@@ -20,7 +20,7 @@ namespace facet::package {
 
 // 3: the build record (shard i of N, build id); 2: reflections shared
 // between stages (1: inline).
-inline constexpr uint32_t kFormatVersion = 5;
+inline constexpr uint32_t kFormatVersion = 6;
 
 struct PackageStage {
   Stage stage = Stage::vertex;
@@ -44,6 +44,10 @@ struct PackagePass {
   // before this one (or the SubShader's start) and this one, in order: the
   // screen is copied into each before this pass draws (format 5; none before).
   std::vector<std::string> grab_before;
+  // The pass's index in its SubShader, as facetc --pass, a variant
+  // collection and a scene's image-effect `pass` count them (a build may keep
+  // only some passes). Format 6; in older files, its position in the package.
+  uint32_t source_index = 0;
 };
 
 // Which part of which build a package is, so that --merge can tell whether

@@ -154,7 +154,7 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
     const SelectedPass& sel = ctx.passes[p];
     const ir::Pass& written = ctx.shader.subshaders[sel.subshader].passes[sel.pass];
     package::PackagePass pp{.name = sel.ir.name, .tags = sel.ir.tags, .state = written.state,
-                            .keywords = sel.keywords};
+                            .keywords = sel.keywords, .source_index = uint32_t(sel.pass)};
     // GrabPasses have no program: the pass after them records them.
     const size_t from = p == 0 || ctx.passes[p - 1].subshader != sel.subshader ? 0 : ctx.passes[p - 1].pass + 1;
     pp.grab_before = ir::grab_textures(ctx.shader.subshaders[sel.subshader], from, sel.pass);

@@ -96,6 +96,7 @@ Json pass(const PackagePass& p) {
   Json list = Json::array();
   for (const PackageVariant& v : p.variants) list.push_back(variant(v));
   Json out{{"name", p.name},
+           {"index", p.source_index},
            {"tags", tags_json(p.tags)},
            {"state", render_state_json(p.state)},
            {"keywords", keyword_space(p.keywords)},

@@ -286,6 +286,7 @@ std::vector<PackagePass> decode_passes(Decoder& d, uint32_t version) {
     out[i].name = d.str();
     out[i].tags = decode_tags(d);
     out[i].state = decode_state(d);
+    out[i].source_index = i;
     if (version < 5) continue;  // format 5: the GrabPasses before the pass
     uint32_t grabs = d.count(4, "GrabPass texture");
     for (uint32_t g = 0; g < grabs && d.ok(); ++g) {
@@ -294,6 +295,7 @@ std::vector<PackagePass> decode_passes(Decoder& d, uint32_t version) {
       if (d.ok() && texture.empty()) d.fail_at(at, "empty GrabPass texture name");
       out[i].grab_before.push_back(std::move(texture));
     }
+    if (version >= 6) out[i].source_index = d.u32();  // format 6: the pass's index in its SubShader
   }
   return out;
 }

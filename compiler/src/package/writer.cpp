@@ -108,6 +108,7 @@ void encode_passes(Encoder& e, const std::vector<PackagePass>& passes) {
     encode_state(e, p.state);
     e.count(p.grab_before.size());
     for (const std::string& texture : p.grab_before) e.str(texture);
+    e.u32(p.source_index);
   }
 }
 

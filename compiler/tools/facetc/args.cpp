@@ -22,6 +22,7 @@ struct RawArgs {
   std::vector<std::string> inputs, defines, include_dirs, passes, keywords, disabled_groups;
   std::string output, out_dir, opt = "performance", target_env = "vulkan1.1", emit, dump, stage, report;
   std::vector<std::string> material_files, strip_files, variant_files;
+  std::string scene;
   std::string diagnostics_format = "text", color = "auto", depfile, dep_target, stdlib_dir;
   bool preprocess = false, assemble = false, reflect = false, list_variants = false, debug_info = false;
   bool all_variants = false, strict_variants = false, no_warnings = false, werror = false;
@@ -71,6 +72,9 @@ void add_options(CLI::App& app, RawArgs& raw) {
       ->allow_extra_args(false);
   app.add_option("--strip", raw.strip_files, "a strip filter (JSON): deny/allow/always_on/always_off rules")
       ->allow_extra_args(false);
+  app.add_option("--scene", raw.scene,
+                 "render the scene (facet render) and build a package of each .shader it names holding exactly the "
+                 "passes and variants it draws, into --out-dir, with the collection as <scene>.variants.json");
   app.add_option("--variants", raw.variant_files,
                  "a variant collection (JSON, as facet render --emit-variants writes it): only the passes and keyword "
                  "sets it lists")
@@ -256,6 +260,16 @@ bool same_path(const std::string& a, const std::string& b) {
 }
 
 std::optional<std::string> check_consistency(const RawArgs& raw, const FacetcArgs& args) {
+  if (!raw.scene.empty()) {
+    if (args.mode != Mode::package) return "--scene builds packages; it goes with no other mode";
+    if (!args.inputs.empty()) return "--scene names the shaders to build; give no input files with it";
+    if (!args.output.empty()) return "--scene builds a package per shader; name their folder with --out-dir";
+    if (!raw.variant_files.empty() || !raw.passes.empty() || !raw.keywords.empty() || raw.all_variants) {
+      return "--scene chooses the passes and variants; give no --variants, --pass, --keywords or --all-variants";
+    }
+    if (args.shard_count > 1 || !raw.depfile.empty()) return "--scene takes no --shard or -MF";
+    return std::nullopt;
+  }
   if (args.inputs.empty()) return "no input files";
   if (!args.output.empty() && args.output != "-" && args.inputs.size() > 1 && args.mode != Mode::report &&
       args.mode != Mode::merge && args.mode != Mode::check) {
@@ -328,6 +342,7 @@ Result<FacetcArgs> build(const RawArgs& raw, std::string& error) {
   args.material_files = raw.material_files;
   args.strip_files = raw.strip_files;
   args.variant_files = raw.variant_files;
+  args.scene = raw.scene;
   args.emit_strip_file = raw.emit_strip;
   args.jobs_format = raw.emit_jobs == "json" ? JobsFormat::json : JobsFormat::ninja;
   args.program = raw.program;

@@ -46,6 +46,7 @@ struct FacetcArgs {
   std::vector<std::string> material_files;  // --materials: material manifests (docs/reports.md)
   std::vector<std::string> strip_files;     // --strip: strip filters (docs/stripping.md)
   std::vector<std::string> variant_files;   // --variants: variant collections (docs/stripping.md)
+  std::string scene;                        // --scene: build what this scene draws (scene_mode.h)
   std::string emit_strip_file;              // --report --emit-strip FILE: the summary's what-ifs as a strip filter
   std::vector<std::string> inputs;
   std::string output;      // -o; "-" is standard output; "" = the mode's default

@@ -23,6 +23,7 @@
 #include "output_safety.h"
 #include "progress.h"
 #include "report_mode.h"
+#include "scene_mode.h"
 #include "strip_filter.h"
 #include "units.h"
 
@@ -468,6 +469,7 @@ int run_merge(const FacetcArgs& args, Console& console, nlohmann::json& json_dia
 }  // namespace
 
 int run_facetc(const FacetcArgs& args, Console& console) {
+  if (!args.scene.empty()) return run_scene(args, console);
   if (!args.out_dir.empty()) {
     std::error_code ec;
     fs::create_directories(args.out_dir, ec);

@@ -63,7 +63,15 @@ Result<VariantCollection> read_variant_collection(const std::string& path, Sourc
       errors.add(where + ".passes", "expected an array of passes");
       continue;
     }
-    auto& passes = out.shaders[s["shader"].get<std::string>()];
+    const std::string name = s["shader"].get<std::string>();
+    if (s.contains("source")) {
+      if (!s["source"].is_string()) {
+        errors.add(where + ".source", "expected the path of the shader's .shader file");
+        continue;
+      }
+      out.sources[name] = s["source"].get<std::string>();
+    }
+    auto& passes = out.shaders[name];
     for (size_t p = 0; p < s["passes"].size(); ++p) {
       read_pass(s["passes"][p], fmt::format("{}.passes[{}]", where, p), errors, passes);
     }

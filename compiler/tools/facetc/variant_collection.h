@@ -3,6 +3,7 @@
 // --emit-variants` writes one with every variant a scene draws.
 //
 //   {"shaders": [{"shader": "Examples/PhongMultiLight",
+//                 "source": "shaders/PhongMultiLight.shader",   (optional)
 //                 "passes": [{"pass": 1, "name": "FORWARD_DELTA", "variants": [["POINT"], ["SPOT"]]}]}]}
 #pragma once
 
@@ -24,6 +25,7 @@ struct CollectedPass {
 // Shader name ("Shader" line) -> pass index in its SubShader -> variants.
 struct VariantCollection {
   std::map<std::string, std::map<size_t, CollectedPass>> shaders;
+  std::map<std::string, std::string> sources;  // shader name -> the .shader it was drawn from, where given
 };
 
 Result<VariantCollection> read_variant_collection(const std::string& path, SourceMap& sources, Diagnostics& diags);

@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <fmt/ranges.h>
+
 #include "render/frame_values.h"
 
 namespace facet::runtime {
@@ -64,6 +66,7 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
                                                                  int height) {
   auto chain = std::make_unique<PostChain>();
   chain->sources.reserve(scene.post.size());
+  std::vector<size_t> positions;  // of each step's pass in its shader's passes
   for (size_t i = 0; i < scene.post.size(); ++i) {
     const ScenePostEffect& effect = scene.post[i];
     SceneObject& source = chain->sources.emplace_back();
@@ -76,12 +79,17 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
       return unexpected(error(fmt::format("{}: {}.shader: the shader does not compile:\n{}", scene.path,
                                           effect.json_path, shader.error())));
     }
-    size_t passes = (*shader)->passes.size();
-    if (size_t(effect.pass) >= passes) {
-      return unexpected(error(fmt::format("{}: {}.pass: the shader '{}' has {} pass{} (0..{})", scene.path,
-                                          effect.json_path, (*shader)->shader.name, passes, passes == 1 ? "" : "es",
-                                          passes ? passes - 1 : 0)));
+    // By the pass's index in its SubShader: a package may hold only some passes.
+    const std::vector<SelectedPass>& passes = (*shader)->passes;
+    auto at = std::find_if(passes.begin(), passes.end(), [&](const SelectedPass& p) { return p.pass == size_t(effect.pass); });
+    if (at == passes.end()) {
+      std::vector<std::string> indices;
+      for (const SelectedPass& p : passes) indices.push_back(std::to_string(p.pass));
+      return unexpected(error(fmt::format("{}: {}.pass: the shader '{}' has no pass {} (its passes: {})", scene.path,
+                                          effect.json_path, (*shader)->shader.name, effect.pass,
+                                          indices.empty() ? "none" : fmt::format("{}", fmt::join(indices, ", ")))));
     }
+    positions.push_back(size_t(at - passes.begin()));
     ObjectState s;
     s.index = i;
     s.scene = &source;
@@ -97,9 +105,8 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
     chain->steps.push_back(std::move(s));
   }
   for (size_t i = 0; i < chain->steps.size(); ++i) {
-    size_t pass = size_t(scene.post[i].pass);
-    FACET_TRY(add_draw(context, scene, library, chain->steps[i], pass, none, {}, step_record(*chain, i, pass),
-                       chain->list));
+    FACET_TRY(add_draw(context, scene, library, chain->steps[i], positions[i], none, {},
+                       step_record(*chain, i, positions[i]), chain->list));
   }
   return chain;
 }

@@ -33,7 +33,7 @@ void adopt_package(ShaderAsset& asset, package::Package pkg) {
   }
   for (size_t p = 0; p < pkg.passes.size(); ++p) {
     const package::PackagePass& built = pkg.passes[p];
-    SelectedPass pass{.subshader = 0, .pass = p, .keywords = built.keywords};
+    SelectedPass pass{.subshader = 0, .pass = built.source_index, .keywords = built.keywords};
     pass.ir.kind = ir::PassKind::normal;
     pass.ir.name = built.name;
     pass.ir.tags = built.tags;

@@ -9,7 +9,9 @@
 
 namespace facet::runtime {
 
-std::string variant_collection_json(const RenderedFrame& frame) {
+std::string variant_collection_json(const RenderedFrame& frame, const std::vector<std::string>& scene_shaders) {
+  const std::set<std::string> named(scene_shaders.begin(), scene_shaders.end());
+  std::map<std::string, std::string> sources;  // by shader name
   struct Pass {
     std::string name;
     std::set<std::vector<std::string>> variants;
@@ -18,6 +20,7 @@ std::string variant_collection_json(const RenderedFrame& frame) {
   for (const DrawRecord& d : frame.draws) {
     if (!d.drawn) continue;
     Pass& pass = shaders[d.shader][d.pass_index];
+    if (named.count(d.shader_path)) sources[d.shader] = d.shader_path;
     pass.name = d.pass_name;
     std::vector<std::string> keywords = d.keywords;
     std::sort(keywords.begin(), keywords.end());
@@ -25,7 +28,9 @@ std::string variant_collection_json(const RenderedFrame& frame) {
   }
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const auto& [name, passes] : shaders) {
-    nlohmann::ordered_json shader = {{"shader", name}, {"passes", nlohmann::ordered_json::array()}};
+    nlohmann::ordered_json shader = {{"shader", name}};
+    if (auto source = sources.find(name); source != sources.end()) shader["source"] = source->second;
+    shader["passes"] = nlohmann::ordered_json::array();
     for (const auto& [index, pass] : passes) {
       nlohmann::ordered_json entry = {{"pass", index}};
       if (!pass.name.empty()) entry["name"] = pass.name;

@@ -22,7 +22,7 @@ namespace facet::tool {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, exr, device, cache, depfile, variants;
+  std::string scene, png, exr, device, cache, depfile, variants, packages;
   std::vector<std::string> include_dirs, shader_dirs;
   int width = 0, height = 0, frames = 1;
   bool stats = false, explain = false, validation = false, strict_variants = false;
@@ -77,6 +77,21 @@ Result<std::string, std::string> depfile_rule(const RenderArgs& a, const runtime
   return make_rule(a.png.empty() ? a.exr : a.png, {deps.begin(), deps.end()});
 }
 
+// --packages: each .shader the scene names is drawn from DIR/<its stem>.facetpkg
+// where that package exists (as `facetc --scene` or `--out-dir` name them).
+void use_packages(runtime::Scene& scene, const std::string& dir) {
+  auto swap = [&](runtime::SceneMaterial& material) {
+    std::filesystem::path path(material.shader);
+    if (path.extension() != ".shader") return;
+    std::filesystem::path package = std::filesystem::path(dir) / path.stem();
+    package += ".facetpkg";
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(package, ec)) material.shader = package.string();
+  };
+  for (runtime::SceneObject& o : scene.objects) swap(o.material);
+  for (runtime::ScenePostEffect& p : scene.post) swap(p.material);
+}
+
 int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   if (a.png.empty() && a.exr.empty()) {
     err << "facet render: nothing to write: give -o out.png and/or --exr out.exr\n";
@@ -87,6 +102,7 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << scene.error().message << "\n";
     return 1;
   }
+  if (!a.packages.empty()) use_packages(*scene, a.packages);
   if (auto clash = runtime::output_clash("facet render", {a.png, a.exr, a.depfile, a.variants},
                                           runtime::scene_inputs(a.scene, *scene))) {
     err << *clash << "\n";
@@ -145,7 +161,11 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     }
   }
   if (!a.variants.empty()) {
-    if (auto w = support::write_file_atomically(a.variants, runtime::variant_collection_json(*frame)); !w) {
+    std::vector<std::string> scene_shaders;
+    for (const runtime::SceneInput& input : runtime::scene_inputs(a.scene, *scene)) {
+      if (input.what == "a shader of the scene") scene_shaders.push_back(input.path);
+    }
+    if (auto w = support::write_file_atomically(a.variants, runtime::variant_collection_json(*frame, scene_shaders)); !w) {
       err << fmt::format("facet render: error: cannot write the variant collection '{}': {}\n", a.variants, w.error());
       return 1;
     }
@@ -182,6 +202,10 @@ int render_command(int argc, const char* const* argv, std::ostream& out, std::os
   app.add_option("--shader-dir", a.shader_dirs,
                  "a folder searched (with its subfolders) for the .shader a package was built from, by the shader's "
                  "name: a variant the package lacks is compiled from it on demand (not with --strict-variants)")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--packages", a.packages,
+                 "draw each .shader the scene names from the package of the same name in this folder, where one "
+                 "exists (as facetc --scene --out-dir builds them)")
       ->check(CLI::ExistingDirectory);
   app.add_option("--emit-variants", a.variants,
                  "also write the variant collection of the frame (JSON: every pass and keyword set drawn, per shader) "

@@ -68,7 +68,9 @@ auto fields(const StageReflection& r) {
 }
 auto fields(const PackageStage& s) { return std::tie(s.stage, s.blob, s.reflection); }
 auto fields(const PackageVariant& v) { return std::tie(v.key.choice, v.keywords, v.stages); }
-auto fields(const PackagePass& p) { return std::tie(p.name, p.tags, p.state, p.keywords, p.variants, p.grab_before); }
+auto fields(const PackagePass& p) {
+  return std::tie(p.name, p.tags, p.state, p.keywords, p.variants, p.grab_before, p.source_index);
+}
 auto fields(const Package& p) {
   return std::tie(p.version, p.shader_name, p.properties, p.subshader_tags, p.lod, p.fallback, p.custom_editor,
                   p.passes, p.spirv_blobs);
@@ -249,7 +251,9 @@ Package rich_package() {
   forward.variants[2].stages.push_back({Stage::geometry, 4, rich_reflection(Stage::geometry)});
   PackagePass shadow{"ShadowCaster", {{"LightMode", "ShadowCaster", {}}}, {}, {}, {}};
   shadow.variants = {{{}, {}, {{Stage::vertex, 0, {}}}}};
+  shadow.source_index = 3;  // a build that kept some of the SubShader's passes
   PackagePass empty{"", {}, {}, {}, {}};
+  empty.source_index = 7;
   p.passes = {forward, shadow, empty};
   p.spirv_blobs = {{0x07230203, 0x00010000, 0, 42, 0}, {0x07230203, 1, 2, 3}, {}, {0xdeadbeef}, {0x01020304, 5}};
   return p;
@@ -662,7 +666,7 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   p.passes[0].variants = {{{{1}}, {"_ON"}, {{Stage::fragment, 0, {}}}}};
   p.spirv_blobs = {{}};
   const char* expected = R"({
-  "format_version": 5,
+  "format_version": 6,
   "shader": {
     "name": "S",
     "lod": 0,
@@ -704,6 +708,7 @@ TEST_F(PackageJsonTest, SmallPackageText) {
   "passes": [
     {
       "name": "P",
+      "index": 0,
       "tags": [
         [
           "LightMode",
@@ -864,6 +869,8 @@ TEST(PackageFormat1Test, AFormat1FileStillReads) {
   EXPECT_EQ(v2->version, kFormatVersion);
   v2->version = 1;
   expect_same(*v1, *v2);
+  // Before format 6 a pass's SubShader index is not recorded: its position stands in.
+  for (size_t i = 0; i < v1->passes.size(); ++i) EXPECT_EQ(v1->passes[i].source_index, i);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ TEST_F(FacetcFindingsTest, DumpOfAPackageWritesTheFileThatOutputNames) {
   FacetcRun run = facetc({"--dump", "u.facetpkg", "-o", "dump.json"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.out, "");
-  EXPECT_THAT(read_all(dir_ / "dump.json"), StartsWith("{\n  \"format_version\": 5"));
+  EXPECT_THAT(read_all(dir_ / "dump.json"), StartsWith("{\n  \"format_version\": 6"));
   FacetcRun onto_input = facetc({"--dump", "u.facetpkg", "-o", "u.facetpkg"});
   EXPECT_EQ(onto_input.exit_code, 1);
   EXPECT_THAT(onto_input.err, HasSubstr("output 'u.facetpkg' is also an input of this build (the shader)"));

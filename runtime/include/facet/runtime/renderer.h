@@ -134,7 +134,10 @@ std::string explain_text(const RenderedFrame& frame);
 
 // The variant collection of a frame (Unity's ShaderVariantCollection, as
 // `facetc --variants` reads it): per shader name, per pass, every keyword set
-// a draw used, sorted, as JSON. `facet render --emit-variants` writes it.
-std::string variant_collection_json(const RenderedFrame& frame);
+// a draw used, sorted, as JSON. `facet render --emit-variants` writes it. A
+// shader loaded from one of `scene_shaders` (the .shader files the scene
+// names) gets that path as "source", which `facetc --scene` builds; the
+// renderer's own shaders (skies, shadow and deferred light passes) get none.
+std::string variant_collection_json(const RenderedFrame& frame, const std::vector<std::string>& scene_shaders = {});
 
 }  // namespace facet::runtime
