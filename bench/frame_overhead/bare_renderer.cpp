@@ -6,6 +6,8 @@
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <map>
+#include <tuple>
 
 #include "facet/runtime/buffer.h"
 #include "facet/runtime/image.h"
@@ -42,6 +44,7 @@ struct BareState {
   VkDescriptorPool pool = VK_NULL_HANDLE;
   std::vector<BareProgram> programs;
   std::vector<BareDraw> draws;
+  std::map<std::tuple<size_t, std::string, bool>, VkPipeline> pipelines;  // by program, state and winding
   VkCommandPool command_pool = VK_NULL_HANDLE;
   VkCommandBuffer commands = VK_NULL_HANDLE;
   VkFence fence = VK_NULL_HANDLE;
@@ -53,9 +56,7 @@ struct BareState {
     if (queries) vkDestroyQueryPool(device, queries, nullptr);
     if (fence) vkDestroyFence(device, fence, nullptr);
     if (command_pool) vkDestroyCommandPool(device, command_pool, nullptr);
-    for (BareDraw& d : draws) {
-      if (d.pipeline) vkDestroyPipeline(device, d.pipeline, nullptr);
-    }
+    for (auto& [key, pipeline] : pipelines) vkDestroyPipeline(device, pipeline, nullptr);
     if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
     for (BareProgram& p : programs) {
       if (p.layout) vkDestroyPipelineLayout(device, p.layout, nullptr);
@@ -318,9 +319,13 @@ Result<void, std::string> make_draws(BareState& s) {
   size_t k = 0;
   for (const CapturedDraw& d : s.capture.draws) {
     BareDraw draw;
-    auto pipeline = make_pipeline(s, d);
-    if (!pipeline) return unexpected(pipeline.error());
-    draw.pipeline = *pipeline;
+    VkPipeline& pipeline = s.pipelines[{d.program, runtime::describe(d.state), d.mirrored}];
+    if (!pipeline) {
+      auto made_pipeline = make_pipeline(s, d);
+      if (!made_pipeline) return unexpected(made_pipeline.error());
+      pipeline = *made_pipeline;
+    }
+    draw.pipeline = pipeline;
     s.draws.push_back(draw);
     BareDraw& bd = s.draws.back();
     const BareProgram& p = s.programs[d.program];
@@ -453,9 +458,11 @@ Result<BareFrame, std::string> BareRenderer::render_frame() {
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &s.commands;
   if (VkResult r = vkQueueSubmit(s.context.queue(), 1, &submit, s.fence); r) return unexpected(failed("submit", r));
+  const double cpu_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   if (VkResult r = vkWaitForFences(s.device, 1, &s.fence, VK_TRUE, UINT64_MAX); r) return unexpected(failed("wait", r));
   vkResetFences(s.device, 1, &s.fence);
   BareFrame frame;
+  frame.cpu_ms = cpu_ms;
   frame.host_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   uint64_t stamps[2] = {0, 0};
   if (s.queries && vkGetQueryPoolResults(s.device, s.queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),

@@ -1,7 +1,7 @@
 // The baseline of the frame-overhead benchmark: a hand-written Vulkan loop
 // that draws a FrameCapture (the same meshes, SPIR-V, fixed-function state,
 // uniform bytes and texels facet used) with everything prepared up front:
-// one pipeline per draw, descriptor sets written once, uniform buffers
+// one pipeline per distinct program and state, descriptor sets written once, uniform buffers
 // filled once, one command buffer and fence reused. A frame is then only
 // recording, submitting and waiting, which is the least any renderer does.
 // Buffers and images are allocated through facet's small helpers; that is
@@ -25,6 +25,7 @@ namespace facet::bench {
 
 struct BareFrame {
   double host_ms = 0;  // recording to the fence
+  double cpu_ms = 0;   // recording and submission: the host's work, without the wait
   double gpu_ms = 0;   // from timestamps; 0 without them
 };
 

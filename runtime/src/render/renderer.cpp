@@ -11,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <map>
+#include <unordered_map>
 #include <optional>
 #include <glm/gtc/packing.hpp>
 
@@ -192,7 +193,8 @@ struct Submitter {
     if (fence) vkDestroyFence(context->device(), fence, nullptr);
     if (pool) vkDestroyCommandPool(context->device(), pool, nullptr);
   }
-  VkResultOf<void> submit(const std::function<void(VkCommandBuffer)>& record) {
+  // `submitted`: set when vkQueueSubmit returns, before the wait.
+  VkResultOf<void> submit(const std::function<void(VkCommandBuffer)>& record, Clock::time_point* submitted = nullptr) {
     VkDevice device = context->device();
     vkResetCommandBuffer(commands, 0);
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -204,6 +206,7 @@ struct Submitter {
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commands;
     if (r == VK_SUCCESS) r = vkQueueSubmit(context->queue(), 1, &submit, fence);
+    if (submitted) *submitted = Clock::now();
     if (r == VK_SUCCESS) r = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
     if (r == VK_SUCCESS) r = vkResetFences(device, 1, &fence);
     if (r != VK_SUCCESS) return vk_failure(VkErrorCode::submit_failed, "recording, submitting or waiting failed", r);
@@ -404,20 +407,26 @@ struct Recorder {
   const ScreenShadows* screen_shadows = nullptr;  // the mask SHADOWS_SCREEN draws read as _ShadowMapTexture
   // What the first frame allocated and wrote for each draw. Later frames
   // bind the same sets and rewrite in place (the previous frame has
-  // finished) the members that come from the frame layer, which is
-  // recomputed every frame; the object's, light's and material's values stay
-  // as written.
+  // finished), once a frame (refresh()), the members that come from the frame
+  // layer, which is recomputed every frame; the object's, light's and
+  // material's values stay as written.
   struct KeptBlock {
     const UniformBlock* block;
     std::span<std::byte> bytes;
     std::vector<MemberSource> frame_members;
   };
-  struct Retained {
-    std::array<VkDescriptorSet, kSetCount> sets{};
-    std::vector<KeptBlock> blocks;
-  };
+  using Sets = std::array<VkDescriptorSet, kSetCount>;
   static constexpr size_t kFrameLayer = 3;  // in the layers of bind()
-  std::map<const Draw*, Retained> retained;
+  static constexpr uint32_t kPerDrawSet = 3;  // the object's set: never shared
+  std::unordered_map<const Draw*, Sets> retained;
+  std::vector<KeptBlock> kept_blocks;  // those with frame members
+  // The frame, light and material sets are shared by every draw whose set
+  // has the same layout, frame layer and contents (its blocks' bytes, its
+  // images, views and samplers): written once, bound by each, refilled once.
+  std::map<std::string, VkDescriptorSet> shared_sets;
+  // What is bound, so that a draw rebinds only the sets that differ.
+  VkPipelineLayout bound_layout = VK_NULL_HANDLE;
+  Sets bound_sets{};
 
   std::vector<std::byte> zeros;
   void push_zeros(VkCommandBuffer commands, const GpuProgram& program) {
@@ -426,12 +435,23 @@ struct Recorder {
     vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
   }
 
-  void rebind(VkCommandBuffer commands, const GpuProgram& program, const Retained& r) {
-    for (const KeptBlock& k : r.blocks) refill_members(k.bytes, *k.block, k.frame_members);
+  // At the start of each frame's recording: the frame members of every kept
+  // block rewritten, and nothing known to be bound in the new command buffer.
+  void refresh() {
+    for (const KeptBlock& k : kept_blocks) refill_members(k.bytes, *k.block, k.frame_members);
+    bound_layout = VK_NULL_HANDLE;
+  }
+
+  void bind_sets(VkCommandBuffer commands, const GpuProgram& program, const Sets& sets) {
+    const bool same_layout = bound_layout == program.layout;
     for (uint32_t set = 0; set < kSetCount; ++set) {
-      if (!r.sets[set]) continue;
-      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &r.sets[set], 0, nullptr);
+      if (same_layout && bound_sets[set] == sets[set]) continue;
+      bound_sets[set] = sets[set];
+      if (sets[set]) {
+        vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &sets[set], 0, nullptr);
+      }
     }
+    bound_layout = program.layout;
     push_zeros(commands, program);
   }
 
@@ -499,101 +519,161 @@ struct Recorder {
                                  const UniformValues& frame, CapturedDraw* captured = nullptr) {
     GpuProgram& program = *draw.variant->program;
     if (auto it = retained.find(&draw); it != retained.end()) {
-      rebind(commands, program, it->second);
+      bind_sets(commands, program, it->second);
       return {};
     }
     UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
     const bool screen_shadowed = reads_screen_shadows(draw);
-    Retained& kept = retained[&draw];
+    Sets sets{};
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!program.set_used[set]) continue;
-      VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-      allocate.descriptorPool = pool;
-      allocate.descriptorSetCount = 1;
-      allocate.pSetLayouts = &program.set_layouts[set];
-      VkDescriptorSet ds = VK_NULL_HANDLE;
-      if (VkResult r = vkAllocateDescriptorSets(context.device(), &allocate, &ds); r != VK_SUCCESS) {
-        return unexpected(error("cannot allocate a descriptor set: " + vk_result_name(r)));
-      }
-      std::vector<VkDescriptorBufferInfo> buffers;
-      std::vector<std::vector<VkDescriptorImageInfo>> images;
-      std::vector<VkWriteDescriptorSet> writes;
-      buffers.reserve(program.blocks.size());
-      images.reserve(program.resources.size());
-      for (const UniformBlock& block : program.blocks) {
-        if (block.set != set) continue;
-        Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
-        if (!slice) return unexpected(slice.error());
-        fill_block(slice->bytes.subspan(0, block.size), block, layers);
-        kept.blocks.push_back({&block, slice->bytes.subspan(0, block.size), members_from_layer(block, layers, kFrameLayer)});
-        if (captured) {
-          std::span<const std::byte> filled = slice->bytes.subspan(0, block.size);
-          captured->descriptors.push_back({set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                           std::vector<std::byte>(filled.begin(), filled.end())});
-        }
-        buffers.push_back({slice->buffer, slice->offset, std::max<VkDeviceSize>(block.size, 16)});
-        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        w.dstSet = ds;
-        w.dstBinding = block.binding;
-        w.descriptorCount = 1;
-        w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        w.pBufferInfo = &buffers.back();
-        writes.push_back(w);
-      }
-      for (const ResourceBinding& r : program.resources) {
-        if (r.set != set) continue;
-        VkDescriptorImageInfo info{};
-        Result<VkSampler, std::string> sampler = resources.sampler();
-        if (!sampler) return unexpected(error(sampler.error()));
-        info.sampler = *sampler;
-        VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
-        CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
-        if (r.kind != ResourceKind::separate_sampler) {
-          Result<const Image*, RenderError> image = image_for(r, object, *draw.light, screen_shadowed);
-          if (!image) return unexpected(image.error());
-          if (captured) {
-            Result<int, std::string> index = capture->image(*image);
-            if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
-            described.image = *index;
-          }
-          // Depth is not linearly filterable; a shadow cube's distances must not
-          // be blended; a screen-space shadow mask is read texel for texel.
-          bool unfiltered = is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image)) ||
-                            (screen_shadows && screen_shadows->owns(*image));
-          if (unfiltered && point_sampler) {
-            info.sampler = point_sampler;
-          }
-          if (resources.clamped(*image)) {
-            Result<VkSampler, std::string> clamp = resources.clamp_sampler();
-            if (!clamp) return unexpected(error(clamp.error()));
-            info.sampler = *clamp;
-          }
-          info.imageView = (*image)->sample_view();
-          info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-          type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
-                                                                : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-        }
-        images.emplace_back(std::max(1u, r.array_size), info);
-        if (captured) {
-          described.type = type;
-          described.sampler = info.sampler == point_sampler && point_sampler ? CapturedSampler::point_clamp
-                                                                             : CapturedSampler::trilinear_repeat;
-          captured->descriptors.push_back(std::move(described));
-        }
-        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        w.dstSet = ds;
-        w.dstBinding = r.binding;
-        w.descriptorCount = uint32_t(images.back().size());
-        w.descriptorType = type;
-        w.pImageInfo = images.back().data();
-        writes.push_back(w);
-      }
-      vkUpdateDescriptorSets(context.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
-      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, program.layout, set, 1, &ds, 0, nullptr);
-      kept.sets[set] = ds;
+      Result<VkDescriptorSet, RenderError> ds = set_for(program, set, draw, object, layers, screen_shadowed, captured);
+      if (!ds) return unexpected(ds.error());
+      sets[set] = *ds;
     }
-    push_zeros(commands, program);
+    retained[&draw] = sets;
+    bind_sets(commands, program, sets);
     return {};
+  }
+
+  // Set `set` of `draw`: a shared one with the same contents, or a new one.
+  Result<VkDescriptorSet, RenderError> set_for(const GpuProgram& program, uint32_t set, const Draw& draw,
+                                               const ObjectState& object, const UniformLayers& layers,
+                                               bool screen_shadowed, CapturedDraw* captured) {
+    std::vector<const UniformBlock*> blocks;
+    std::vector<std::vector<std::byte>> contents;
+    for (const UniformBlock& block : program.blocks) {
+      if (block.set != set) continue;
+      blocks.push_back(&block);
+      contents.emplace_back(block.size);
+      fill_block(contents.back(), block, layers);
+      if (captured) {
+        captured->descriptors.push_back({set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, contents.back()});
+      }
+    }
+    std::vector<const ResourceBinding*> bound;
+    std::vector<VkDescriptorType> types;
+    std::vector<std::vector<VkDescriptorImageInfo>> images;
+    for (const ResourceBinding& r : program.resources) {
+      if (r.set != set) continue;
+      Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> image =
+          image_info(r, object, *draw.light, screen_shadowed, set, captured);
+      if (!image) return unexpected(image.error());
+      bound.push_back(&r);
+      types.push_back(image->first);
+      images.emplace_back(std::max(1u, r.array_size), image->second);
+    }
+    std::string key;
+    if (set != kPerDrawSet) {
+      key = shared_key(program.set_layouts[set], layers[kFrameLayer], contents, images);
+      if (auto it = shared_sets.find(key); it != shared_sets.end()) return it->second;
+    }
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = pool;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &program.set_layouts[set];
+    VkDescriptorSet ds = VK_NULL_HANDLE;
+    if (VkResult r = vkAllocateDescriptorSets(context.device(), &allocate, &ds); r != VK_SUCCESS) {
+      return unexpected(error("cannot allocate a descriptor set: " + vk_result_name(r)));
+    }
+    std::vector<VkDescriptorBufferInfo> buffers;
+    std::vector<VkWriteDescriptorSet> writes;
+    buffers.reserve(blocks.size());
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      const UniformBlock& block = *blocks[b];
+      Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
+      if (!slice) return unexpected(slice.error());
+      std::span<std::byte> bytes = slice->bytes.subspan(0, block.size);
+      std::copy(contents[b].begin(), contents[b].end(), bytes.begin());
+      std::vector<MemberSource> frame_members = members_from_layer(block, layers, kFrameLayer);
+      if (!frame_members.empty()) kept_blocks.push_back({&block, bytes, std::move(frame_members)});
+      buffers.push_back({slice->buffer, slice->offset, std::max<VkDeviceSize>(block.size, 16)});
+      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      w.dstSet = ds;
+      w.dstBinding = block.binding;
+      w.descriptorCount = 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+      w.pBufferInfo = &buffers.back();
+      writes.push_back(w);
+    }
+    for (size_t i = 0; i < bound.size(); ++i) {
+      VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      w.dstSet = ds;
+      w.dstBinding = bound[i]->binding;
+      w.descriptorCount = uint32_t(images[i].size());
+      w.descriptorType = types[i];
+      w.pImageInfo = images[i].data();
+      writes.push_back(w);
+    }
+    vkUpdateDescriptorSets(context.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+    if (!key.empty()) shared_sets.emplace(std::move(key), ds);
+    return ds;
+  }
+
+  // What makes two sets interchangeable: the layout, the frame layer their
+  // frame members are refilled from, and every byte and handle written.
+  static std::string shared_key(VkDescriptorSetLayout layout, const UniformValues* frame,
+                                const std::vector<std::vector<std::byte>>& contents,
+                                const std::vector<std::vector<VkDescriptorImageInfo>>& images) {
+    std::string key;
+    auto put = [&](const void* data, size_t size) { key.append(static_cast<const char*>(data), size); };
+    put(&layout, sizeof layout);
+    put(&frame, sizeof frame);
+    for (const std::vector<std::byte>& c : contents) {
+      const uint64_t size = c.size();
+      put(&size, sizeof size);
+      put(c.data(), c.size());
+    }
+    for (const std::vector<VkDescriptorImageInfo>& i : images) {
+      put(&i.front().sampler, sizeof(VkSampler));
+      put(&i.front().imageView, sizeof(VkImageView));
+    }
+    return key;
+  }
+
+  // The descriptor type and image info of resource `r` (a separate sampler
+  // gets the sampler alone).
+  Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> image_info(
+      const ResourceBinding& r, const ObjectState& object, const LightValues& light, bool screen_shadowed, uint32_t set,
+      CapturedDraw* captured) {
+    VkDescriptorImageInfo info{};
+    Result<VkSampler, std::string> sampler = resources.sampler();
+    if (!sampler) return unexpected(error(sampler.error()));
+    info.sampler = *sampler;
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
+    CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
+    if (r.kind != ResourceKind::separate_sampler) {
+      Result<const Image*, RenderError> image = image_for(r, object, light, screen_shadowed);
+      if (!image) return unexpected(image.error());
+      if (captured) {
+        Result<int, std::string> index = capture->image(*image);
+        if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
+        described.image = *index;
+      }
+      // Depth is not linearly filterable; a shadow cube's distances must not
+      // be blended; a screen-space shadow mask is read texel for texel.
+      bool unfiltered = is_depth_format((*image)->desc().format) || (shadows && shadows->is_cube(*image)) ||
+                        (screen_shadows && screen_shadows->owns(*image));
+      if (unfiltered && point_sampler) {
+        info.sampler = point_sampler;
+      }
+      if (resources.clamped(*image)) {
+        Result<VkSampler, std::string> clamp = resources.clamp_sampler();
+        if (!clamp) return unexpected(error(clamp.error()));
+        info.sampler = *clamp;
+      }
+      info.imageView = (*image)->sample_view();
+      info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+      type = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                                                            : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    }
+    if (captured) {
+      described.type = type;
+      described.sampler = info.sampler == point_sampler && point_sampler ? CapturedSampler::point_clamp
+                                                                         : CapturedSampler::trilinear_repeat;
+      captured->descriptors.push_back(std::move(described));
+    }
+    return std::pair{type, info};
   }
 };
 
@@ -922,6 +1002,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (!submitter_made) return unexpected(submitter_made.error());
   Submitter& submitter = *submitter_made;
   auto record = [&](VkCommandBuffer commands, bool capturing) {
+    recorder.refresh();
     if (queries) {
       vkCmdResetQueryPool(commands, queries, 0, 2);
       vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
@@ -941,12 +1022,16 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     frame.stats.triangles += *shadow_triangles;
     VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
     VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
-    // Binds `mesh` and draws all of it.
+    // Binds `mesh` (unless it is bound already) and draws all of it.
+    const GpuMesh* bound_mesh = nullptr;
     auto draw_mesh = [&](const GpuMesh& mesh) {
-      VkBuffer vb = mesh.vertices.handle();
-      VkDeviceSize offset = 0;
-      vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
-      vkCmdBindIndexBuffer(commands, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      if (bound_mesh != &mesh) {
+        VkBuffer vb = mesh.vertices.handle();
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(commands, 0, 1, &vb, &offset);
+        vkCmdBindIndexBuffer(commands, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        bound_mesh = &mesh;
+      }
       vkCmdDrawIndexed(commands, mesh.index_count, 1, 0, 0, 0);
       frame.stats.triangles += mesh.index_count / 3;
     };
@@ -1100,8 +1185,11 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     frame.stats.grabs = 0;
     // In place: the kept blocks point at these values.
     if (f > 0) frame_values.assign(per_frame_uniforms(scene, camera, frame.width, frame.height));
-    VkResultOf<void> submitted = submitter.submit([&](VkCommandBuffer c) { record(c, f == 0 && capture); });
+    Clock::time_point submit_returned = frame_start;
+    VkResultOf<void> submitted =
+        submitter.submit([&](VkCommandBuffer c) { record(c, f == 0 && capture); }, &submit_returned);
     frame.stats.frame_ms.push_back(ms_since(frame_start));
+    frame.stats.frame_cpu_ms.push_back(std::chrono::duration<double, std::milli>(submit_returned - frame_start).count());
     if (failed) return unexpected(*failed);
     if (!submitted) return unexpected(error(describe(submitted.error())));
     uint64_t stamps[2] = {0, 0};

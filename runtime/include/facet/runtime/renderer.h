@@ -102,6 +102,7 @@ struct RenderStats {
   uint64_t textures_loaded = 0;    // from files
   std::optional<double> gpu_ms;    // the frame's GPU time from timestamps (the median over frames)
   std::vector<double> frame_ms;     // per frame: host time from the first uniform to the fence
+  std::vector<double> frame_cpu_ms; // per frame: the host's work, from the first uniform to the submission (no wait)
   std::vector<double> frame_gpu_ms; // per frame, from timestamps
   double compile_ms = 0;           // loading and compiling shaders
   double total_ms = 0;

@@ -1,0 +1,196 @@
+// The scaling benchmark: what facet costs the host per object as a scene
+// grows from 10 to 100,000 objects, on repeated frames, against the bare
+// Vulkan loop of bench/frame_overhead drawing the same frame (the same
+// meshes, SPIR-V, state and uniform bytes, everything prepared up front),
+// side by side in one run: the two alternate frame by frame.
+//
+// Per object count it prints
+//   - CPU µs per draw: the host's work for a frame (facet: the frame
+//     uniforms, every kept block's frame members, recording and submission;
+//     bare: recording and submission), without the wait for the GPU, over the
+//     draws of the frame; the median over the timed frames;
+//   - frame ms: the whole frame to the fence, the GPU's (or lavapipe's) work
+//     included;
+//   - host KB per object: the growth of the process's resident memory from
+//     before the render to its last frame (facet's own render, without the
+//     capture or the bare loop), over the objects.
+//
+//   facet_scaling_bench [--device SEL] [--counts 10,100,1000,10000,100000]
+//                       [--frames N] [--shader PATH] [--validation]
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "../frame_overhead/bare_renderer.h"
+#include "facet/runtime/frame_capture.h"
+#include "facet/runtime/renderer.h"
+#include "facet/runtime/scene.h"
+#include "facet/runtime/shader_compiler.h"
+#include "facet/runtime/vulkan_context.h"
+
+using namespace facet;
+
+namespace {
+
+struct Options {
+  std::string device, shader = std::string(FACET_SOURCE_DIR) + "/examples/shaders/Diffuse.shader";
+  std::vector<int> counts = {10, 100, 1000, 10000, 100000};
+  int frames = 20;
+  bool validation = false;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The process's resident memory, in bytes (VmRSS of /proc/self/status).
+double resident_bytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) * 1024;
+  }
+  return 0;
+}
+
+// `count` small cubes in a square grid facing the camera, one directional
+// light: one ForwardBase draw per object.
+runtime::Scene grid_scene(const std::string& shader, int count) {
+  runtime::Scene scene;
+  scene.path = fmt::format("grid of {}", count);
+  scene.width = 160;
+  scene.height = 120;
+  scene.camera.transform.position = {0, 0, -12};
+  scene.camera.transform.look_at = runtime::Vec3{0, 0, 0};
+  scene.camera.fov = 45;
+  runtime::SceneLight sun;
+  sun.json_path = "lights[0]";
+  sun.transform.rotation = {40, -30, 0};
+  scene.lights.push_back(sun);
+  const int side = int(std::ceil(std::sqrt(double(count))));
+  const float step = 10.0f / float(side);
+  scene.objects.reserve(size_t(count));
+  for (int i = 0; i < count; ++i) {
+    runtime::SceneObject o;
+    o.json_path = fmt::format("objects[{}]", i);
+    o.mesh = "cube";
+    o.transform.position = {(float(i % side) - float(side - 1) / 2) * step,
+                            (float(i / side) - float(side - 1) / 2) * step, 0};
+    o.transform.rotation = {30, 45, 0};
+    o.transform.scale = {step * 0.6f, step * 0.6f, step * 0.6f};
+    o.material.shader = shader;
+    o.material.json_path = o.json_path + ".material";
+    scene.objects.push_back(std::move(o));
+  }
+  return scene;
+}
+
+struct Row {
+  int objects = 0;
+  size_t draws = 0;
+  double facet_cpu_us = 0, bare_cpu_us = 0;  // per draw
+  double facet_frame_ms = 0, bare_frame_ms = 0;
+  double kb_per_object = 0;
+};
+
+Result<Row, std::string> measure(runtime::Context& context, const Options& o, int count) {
+  const runtime::Scene scene = grid_scene(o.shader, count);
+  auto shaders = runtime::make_shader_store();
+  runtime::RenderOptions render{.shader_compiler = runtime::make_shader_compiler(), .shaders = shaders};
+  // Compiled once into the store, so that the measured renders load nothing.
+  if (auto warm = runtime::render_scene(context, grid_scene(o.shader, 1), render); !warm) {
+    return unexpected(warm.error().message);
+  }
+  Row row{.objects = count};
+  // Memory: facet's render alone, sampled at its last frame.
+  const double before = resident_bytes();
+  double during = before;
+  render.frames = 3;
+  render.after_frame = [&](int f) {
+    if (f == render.frames - 1) during = resident_bytes();
+  };
+  if (auto r = runtime::render_scene(context, scene, render); !r) return unexpected(r.error().message);
+  row.kb_per_object = std::max(0.0, during - before) / 1024 / count;
+  // The bare loop draws facet's first frame, captured.
+  runtime::FrameCapture capture;
+  render.frames = 1;
+  render.after_frame = nullptr;
+  render.capture = &capture;
+  auto first = runtime::render_scene(context, scene, render);
+  if (!first) return unexpected(first.error().message);
+  row.draws = capture.draws.size();
+  bench::BareRenderer bare(context, capture);
+  FACET_TRY(bare.prepare());
+  // Timing: facet's repeated frames, each followed by a bare frame.
+  std::vector<double> bare_cpu, bare_frame;
+  std::optional<std::string> bare_failed;
+  render.capture = nullptr;
+  render.frames = o.frames + 1;  // the first writes every draw's descriptors: not timed
+  render.after_frame = [&](int f) {
+    auto frame = bare.render_frame();
+    if (!frame) bare_failed = frame.error();
+    if (!frame || f == 0) return;
+    bare_cpu.push_back(frame->cpu_ms);
+    bare_frame.push_back(frame->host_ms);
+  };
+  auto timed = runtime::render_scene(context, scene, render);
+  if (!timed) return unexpected(timed.error().message);
+  if (bare_failed) return unexpected(*bare_failed);
+  const runtime::RenderStats& st = timed->stats;
+  std::vector<double> facet_cpu(st.frame_cpu_ms.begin() + 1, st.frame_cpu_ms.end());
+  std::vector<double> facet_frame(st.frame_ms.begin() + 1, st.frame_ms.end());
+  row.facet_cpu_us = median(facet_cpu) * 1000 / double(row.draws);
+  row.bare_cpu_us = median(bare_cpu) * 1000 / double(row.draws);
+  row.facet_frame_ms = median(facet_frame);
+  row.bare_frame_ms = median(bare_frame);
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"facet's CPU time per draw and host memory per object, 10 to 100,000 objects, against a bare Vulkan loop",
+               "facet_scaling_bench"};
+  Options o;
+  app.add_option("--device", o.device, "Vulkan device: index or name part (default: lavapipe)");
+  app.add_option("--counts", o.counts, "object counts")->delimiter(',')->check(CLI::Range(1, 10000000));
+  app.add_option("--frames", o.frames, "timed frames per count")->check(CLI::Range(1, 100000));
+  app.add_option("--shader", o.shader, "the objects' shader (.shader or .facetpkg)");
+  app.add_flag("--validation", o.validation, "enable the validation layer; any message fails the run");
+  CLI11_PARSE(app, argc, argv);
+  auto context = runtime::create_context({.device = o.device, .validation = o.validation});
+  if (!context) {
+    std::cerr << "facet_scaling_bench: " << runtime::describe(context.error()) << "\n";
+    return 1;
+  }
+  std::cout << fmt::format("device: {}\nshader: {}\n{} timed frames per count, medians; CPU = the host's work per frame "
+                           "without the wait, per draw\n\n",
+                           runtime::describe((*context)->device_info()), o.shader, o.frames);
+  std::cout << fmt::format("{:>8} {:>8} {:>14} {:>13} {:>11} {:>14} {:>13} {:>11}\n", "objects", "draws",
+                           "facet CPU µs", "bare CPU µs", "facet/bare", "facet frame ms", "bare frame ms",
+                           "host KB/obj");
+  for (int count : o.counts) {
+    auto row = measure(**context, o, count);
+    if (!row) {
+      std::cerr << fmt::format("{} objects: {}\n", count, row.error());
+      return 1;
+    }
+    std::cout << fmt::format("{:>8} {:>8} {:>14.3f} {:>13.3f} {:>11.2f} {:>14.3f} {:>13.3f} {:>11.2f}\n", row->objects,
+                             row->draws, row->facet_cpu_us, row->bare_cpu_us, row->facet_cpu_us / row->bare_cpu_us,
+                             row->facet_frame_ms, row->bare_frame_ms, row->kb_per_object)
+              << std::flush;
+  }
+  if (o.validation && !(*context)->messages().empty()) {
+    std::cerr << "the validation layer reported:\n" << (*context)->messages_text();
+    return 1;
+  }
+  return 0;
+}
