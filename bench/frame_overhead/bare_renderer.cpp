@@ -419,7 +419,7 @@ void record(BareState& s) {
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
     vkCmdBindIndexBuffer(cb, s.index_buffers[d.mesh].handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cb, uint32_t(c.meshes[d.mesh].indices.size()), 1, 0, 0, 0);
+    vkCmdDrawIndexed(cb, uint32_t(c.meshes[d.mesh].indices.size()), d.instances, 0, 0, 0);
   }
   vkCmdEndRenderPass(cb);
   if (s.queries) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, s.queries, 1);

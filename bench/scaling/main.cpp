@@ -13,7 +13,13 @@
 //     included;
 //   - host KB per object: the growth of the process's resident memory from
 //     before the render to its last frame (facet's own render, without the
-//     capture or the bare loop), over the objects.
+//     capture or the bare loop), over the objects; and what each object
+//     added since the previous count (the fixed part, pipelines and the
+//     driver's, left out).
+// Each count is measured twice: the objects drawn one by one, and with GPU
+// instancing (the material's "instancing": up to 128 objects a draw, each
+// with its own colour either way); the last table compares the two per
+// object.
 //
 //   facet_scaling_bench [--device SEL] [--counts 10,100,1000,10000,100000]
 //                       [--frames N] [--shader PATH] [--validation]
@@ -39,7 +45,7 @@ using namespace facet;
 namespace {
 
 struct Options {
-  std::string device, shader = std::string(FACET_SOURCE_DIR) + "/examples/shaders/Diffuse.shader";
+  std::string device, shader = std::string(FACET_SOURCE_DIR) + "/examples/shaders/Instanced.shader";
   std::vector<int> counts = {10, 100, 1000, 10000, 100000};
   int frames = 20;
   bool validation = false;
@@ -61,9 +67,10 @@ double resident_bytes() {
   return 0;
 }
 
-// `count` small cubes in a square grid facing the camera, one directional
-// light: one ForwardBase draw per object.
-runtime::Scene grid_scene(const std::string& shader, int count) {
+// `count` small cubes in a square grid facing the camera, each with its own
+// _Color, one directional light: one ForwardBase draw per object, or per
+// 128 objects with `instancing`.
+runtime::Scene grid_scene(const std::string& shader, int count, bool instancing) {
   runtime::Scene scene;
   scene.path = fmt::format("grid of {}", count);
   scene.width = 160;
@@ -88,6 +95,12 @@ runtime::Scene grid_scene(const std::string& shader, int count) {
     o.transform.scale = {step * 0.6f, step * 0.6f, step * 0.6f};
     o.material.shader = shader;
     o.material.json_path = o.json_path + ".material";
+    o.material.instancing = instancing;
+    const float phase = float(i) * 0.07f;
+    o.material.properties.push_back({.name = "_Color",
+                                     .json_path = o.material.json_path + ".properties._Color",
+                                     .numbers = {0.5f + 0.5f * std::sin(phase), 0.5f + 0.5f * std::sin(phase + 2.1f),
+                                                 0.5f + 0.5f * std::sin(phase + 4.2f), 1}});
     scene.objects.push_back(std::move(o));
   }
   return scene;
@@ -99,14 +112,15 @@ struct Row {
   double facet_cpu_us = 0, bare_cpu_us = 0;  // per draw
   double facet_frame_ms = 0, bare_frame_ms = 0;
   double kb_per_object = 0;
+  double growth_bytes = 0;  // of resident memory, the whole render
 };
 
-Result<Row, std::string> measure(runtime::Context& context, const Options& o, int count) {
-  const runtime::Scene scene = grid_scene(o.shader, count);
+Result<Row, std::string> measure(runtime::Context& context, const Options& o, int count, bool instancing) {
+  const runtime::Scene scene = grid_scene(o.shader, count, instancing);
   auto shaders = runtime::make_shader_store();
   runtime::RenderOptions render{.shader_compiler = runtime::make_shader_compiler(), .shaders = shaders};
   // Compiled once into the store, so that the measured renders load nothing.
-  if (auto warm = runtime::render_scene(context, grid_scene(o.shader, 1), render); !warm) {
+  if (auto warm = runtime::render_scene(context, grid_scene(o.shader, 1, instancing), render); !warm) {
     return unexpected(warm.error().message);
   }
   Row row{.objects = count};
@@ -118,7 +132,8 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
     if (f == render.frames - 1) during = resident_bytes();
   };
   if (auto r = runtime::render_scene(context, scene, render); !r) return unexpected(r.error().message);
-  row.kb_per_object = std::max(0.0, during - before) / 1024 / count;
+  row.growth_bytes = std::max(0.0, during - before);
+  row.kb_per_object = row.growth_bytes / 1024 / count;
   // The bare loop draws facet's first frame, captured.
   runtime::FrameCapture capture;
   render.frames = 1;
@@ -174,19 +189,40 @@ int main(int argc, char** argv) {
   std::cout << fmt::format("device: {}\nshader: {}\n{} timed frames per count, medians; CPU = the host's work per frame "
                            "without the wait, per draw\n\n",
                            runtime::describe((*context)->device_info()), o.shader, o.frames);
-  std::cout << fmt::format("{:>8} {:>8} {:>14} {:>13} {:>11} {:>14} {:>13} {:>11}\n", "objects", "draws",
-                           "facet CPU µs", "bare CPU µs", "facet/bare", "facet frame ms", "bare frame ms",
-                           "host KB/obj");
-  for (int count : o.counts) {
-    auto row = measure(**context, o, count);
-    if (!row) {
-      std::cerr << fmt::format("{} objects: {}\n", count, row.error());
-      return 1;
+  std::vector<Row> rows[2];
+  for (bool instancing : {false, true}) {
+    std::cout << (instancing ? "\nGPU instancing (up to 128 objects a draw)\n" : "separate draws\n");
+    std::cout << fmt::format("{:>8} {:>8} {:>14} {:>13} {:>11} {:>14} {:>13} {:>11} {:>13}\n", "objects", "draws",
+                             "facet CPU µs", "bare CPU µs", "facet/bare", "facet frame ms", "bare frame ms",
+                             "host KB/obj", "KB/obj added");
+    for (int count : o.counts) {
+      auto row = measure(**context, o, count, instancing);
+      if (!row) {
+        std::cerr << fmt::format("{} objects: {}\n", count, row.error());
+        return 1;
+      }
+      // What each object added to memory since the previous count: the
+      // per-object cost without the fixed part (pipelines, the driver).
+      std::string added = "";
+      if (const std::vector<Row>& done = rows[instancing]; !done.empty()) {
+        added = fmt::format("{:.2f}", (row->growth_bytes - done.back().growth_bytes) / 1024 /
+                                          double(row->objects - done.back().objects));
+      }
+      std::cout << fmt::format("{:>8} {:>8} {:>14.3f} {:>13.3f} {:>11.2f} {:>14.3f} {:>13.3f} {:>11.2f} {:>13}\n",
+                               row->objects, row->draws, row->facet_cpu_us, row->bare_cpu_us,
+                               row->facet_cpu_us / row->bare_cpu_us, row->facet_frame_ms, row->bare_frame_ms,
+                               row->kb_per_object, added)
+                << std::flush;
+      rows[instancing].push_back(*row);
     }
-    std::cout << fmt::format("{:>8} {:>8} {:>14.3f} {:>13.3f} {:>11.2f} {:>14.3f} {:>13.3f} {:>11.2f}\n", row->objects,
-                             row->draws, row->facet_cpu_us, row->bare_cpu_us, row->facet_cpu_us / row->bare_cpu_us,
-                             row->facet_frame_ms, row->bare_frame_ms, row->kb_per_object)
-              << std::flush;
+  }
+  std::cout << "\nper object: facet's CPU µs drawn separately / instanced\n";
+  std::cout << fmt::format("{:>8} {:>12} {:>12} {:>8}\n", "objects", "separate", "instanced", "ratio");
+  for (size_t i = 0; i < rows[0].size(); ++i) {
+    auto per_object = [](const Row& r) { return r.facet_cpu_us * double(r.draws) / double(r.objects); };
+    double separate = per_object(rows[0][i]), instanced = per_object(rows[1][i]);
+    std::cout << fmt::format("{:>8} {:>12.3f} {:>12.3f} {:>7.1f}x\n", rows[0][i].objects, separate, instanced,
+                             separate / instanced);
   }
   if (o.validation && !(*context)->messages().empty()) {
     std::cerr << "the validation layer reported:\n" << (*context)->messages_text();

@@ -108,13 +108,24 @@ class Writer {
     if (vertex_lights()) line(fmt::format("  float3 vertexLight : {};", semantic()));
     if (lit() && !d_.no_fog) line(fmt::format("  UNITY_FOG_COORDS({})", next_texcoord_++));
     if (lit()) line(fmt::format("  UNITY_SHADOW_COORDS({})", next_texcoord_++));
+    line("  UNITY_VERTEX_INPUT_INSTANCE_ID");
     line("};");
   }
 
   void vertex_function() {
+    // The instance comes in as a parameter of its own, so that an appdata
+    // without UNITY_VERTEX_INPUT_INSTANCE_ID draws instanced too.
+    line("#if defined(UNITY_INSTANCING_ENABLED)");
+    line(fmt::format("v2f_surf vert_surf({} v, uint facetInstanceID : SV_InstanceID) {{", s_.vertex_input));
+    line("#else");
     line(fmt::format("v2f_surf vert_surf({} v) {{", s_.vertex_input));
+    line("#endif");
     line("  v2f_surf o;");
     line("  UNITY_INITIALIZE_OUTPUT(v2f_surf, o);");
+    line("#if defined(UNITY_INSTANCING_ENABLED)");
+    line("  unity_InstanceID = facetInstanceID + unity_BaseInstanceID;");
+    line("  o.instanceID = facetInstanceID;");
+    line("#endif");
     if (runs_user_code() && !d_.vertex_function.empty()) {
       if (s_.vertex_fills_input) {
         line(fmt::format("  {} customInputData;", s_.input_struct));
@@ -385,6 +396,7 @@ class Writer {
     } else {
       line(fmt::format("fixed4 frag_surf(v2f_surf IN{}) : SV_Target {{", front));
     }
+    line("  UNITY_SETUP_INSTANCE_ID(IN);");
     if (shadow()) {
       if (runs_surf()) {
         if (caster_world_pos()) {

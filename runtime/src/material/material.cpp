@@ -95,6 +95,9 @@ Result<Material, MaterialError> make_material(const ir::Shader& shader, const Sc
     if (is_scalar(*p)) floats.push_back({p->name, (*v)[0]});
   }
   m.keywords = scene.keywords;
+  if (scene.instancing && std::find(m.keywords.begin(), m.keywords.end(), "INSTANCING_ON") == m.keywords.end()) {
+    m.keywords.push_back("INSTANCING_ON");
+  }
   for (const std::string& k : variants::keywords_from_properties(shader.properties, floats)) {
     if (std::find(m.keywords.begin(), m.keywords.end(), k) == m.keywords.end()) m.keywords.push_back(k);
   }

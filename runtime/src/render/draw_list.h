@@ -64,6 +64,11 @@ struct Draw {
   // for `GrabPass { }`, grabbed every time; a named one only the first time
   // in the frame, as Unity grabs it once).
   std::vector<std::string> grab_before;
+  // An instanced draw (render/instancing.h): the objects it draws, this
+  // draw's first, and the records of the draws merged into it. Empty: the
+  // draw's object alone.
+  std::vector<size_t> instances;
+  std::vector<DrawRecord> instance_records;
 };
 
 using ir::kGrabTexture;  // the texture `GrabPass { }` fills

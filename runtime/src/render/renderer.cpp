@@ -20,10 +20,12 @@
 #include "render/background.h"
 #include "render/capture.h"
 #include "render/deferred.h"
+#include "render/descriptor_pools.h"
 #include "render/draw_list.h"
 #include "render/environment_lighting.h"
 #include "render/probes.h"
 #include "render/grab.h"
+#include "render/instancing.h"
 #include "render/post.h"
 #include "render/resources.h"
 #include "render/screen_shadows.h"
@@ -50,12 +52,10 @@ struct FrameObjects {
   // (the last part is render_pass with its colour loaded).
   VkRenderPass first_part = VK_NULL_HANDLE, middle_part = VK_NULL_HANDLE, last_part = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
   VkPipelineCache cache = VK_NULL_HANDLE;
   ~FrameObjects() {
     if (!device) return;
     vkDeviceWaitIdle(device);
-    if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
     if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
     for (VkRenderPass p : {render_pass, first_part, middle_part, last_part}) {
       if (p) vkDestroyRenderPass(device, p, nullptr);
@@ -399,7 +399,7 @@ struct Recorder {
   const Context& context;
   Resources& resources;
   UniformArena& arena;
-  VkDescriptorPool pool;
+  DescriptorPools& pools;
   std::map<std::string, const Image*> overrides;  // by resource name: the chain's _MainTex and depth
   VkSampler point_sampler = VK_NULL_HANDLE;        // for overridden depth images (not linearly filterable)
   CaptureBuilder* capture = nullptr;
@@ -419,6 +419,7 @@ struct Recorder {
   static constexpr size_t kFrameLayer = 3;  // in the layers of bind()
   static constexpr uint32_t kPerDrawSet = 3;  // the object's set: never shared
   std::unordered_map<const Draw*, Sets> retained;
+  const std::vector<ObjectState>* instance_owners = nullptr;  // what Draw::instances index
   std::vector<KeptBlock> kept_blocks;  // those with frame members
   // The frame, light and material sets are shared by every draw whose set
   // has the same layout, frame layer and contents (its blocks' bytes, its
@@ -523,11 +524,19 @@ struct Recorder {
       return {};
     }
     UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
+    // An instanced draw's objects, each with its own layers (the draw's object alone when not merged).
+    std::vector<UniformLayers> instances;
+    for (size_t k : draw.instances) {
+      const ObjectState& o = (*instance_owners)[k];
+      instances.push_back({&o.draw, &draw.light->values, &o.material.uniforms, &frame});
+    }
+    if (instances.empty()) instances.push_back(layers);
     const bool screen_shadowed = reads_screen_shadows(draw);
     Sets sets{};
     for (uint32_t set = 0; set < kSetCount; ++set) {
       if (!program.set_used[set]) continue;
-      Result<VkDescriptorSet, RenderError> ds = set_for(program, set, draw, object, layers, screen_shadowed, captured);
+      Result<VkDescriptorSet, RenderError> ds =
+          set_for(program, set, draw, object, layers, instances, screen_shadowed, captured);
       if (!ds) return unexpected(ds.error());
       sets[set] = *ds;
     }
@@ -539,14 +548,19 @@ struct Recorder {
   // Set `set` of `draw`: a shared one with the same contents, or a new one.
   Result<VkDescriptorSet, RenderError> set_for(const GpuProgram& program, uint32_t set, const Draw& draw,
                                                const ObjectState& object, const UniformLayers& layers,
-                                               bool screen_shadowed, CapturedDraw* captured) {
+                                               const std::vector<UniformLayers>& instances, bool screen_shadowed,
+                                               CapturedDraw* captured) {
     std::vector<const UniformBlock*> blocks;
     std::vector<std::vector<std::byte>> contents;
     for (const UniformBlock& block : program.blocks) {
       if (block.set != set) continue;
       blocks.push_back(&block);
       contents.emplace_back(block.size);
-      fill_block(contents.back(), block, layers);
+      if (is_instanced_block(block)) {
+        fill_instanced_block(contents.back(), block, instances);
+      } else {
+        fill_block(contents.back(), block, layers);
+      }
       if (captured) {
         captured->descriptors.push_back({set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, contents.back()});
       }
@@ -568,14 +582,9 @@ struct Recorder {
       key = shared_key(program.set_layouts[set], layers[kFrameLayer], contents, images);
       if (auto it = shared_sets.find(key); it != shared_sets.end()) return it->second;
     }
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = pool;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &program.set_layouts[set];
-    VkDescriptorSet ds = VK_NULL_HANDLE;
-    if (VkResult r = vkAllocateDescriptorSets(context.device(), &allocate, &ds); r != VK_SUCCESS) {
-      return unexpected(error("cannot allocate a descriptor set: " + vk_result_name(r)));
-    }
+    Result<VkDescriptorSet, std::string> allocated = pools.allocate(program.set_layouts[set], program.set_bindings[set]);
+    if (!allocated) return unexpected(error(allocated.error()));
+    VkDescriptorSet ds = *allocated;
     std::vector<VkDescriptorBufferInfo> buffers;
     std::vector<VkWriteDescriptorSet> writes;
     buffers.reserve(blocks.size());
@@ -676,40 +685,6 @@ struct Recorder {
     return std::pair{type, info};
   }
 };
-
-Result<VkDescriptorPool, RenderError> make_pool(VkDevice device, const std::vector<const std::vector<Draw>*>& lists) {
-  std::map<VkDescriptorType, uint32_t> counts;
-  uint32_t sets = 0;
-  std::vector<const Draw*> draws;
-  for (const std::vector<Draw>* list : lists)
-    for (const Draw& d : *list) draws.push_back(&d);
-  for (const Draw* dp : draws) {
-    const Draw& d = *dp;
-    const GpuProgram& p = *d.variant->program;
-    for (bool used : p.set_used) sets += used;
-    counts[VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER] += uint32_t(p.blocks.size());
-    for (const ResourceBinding& r : p.resources) {
-      VkDescriptorType t = r.kind == ResourceKind::combined_image_sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
-                           : r.kind == ResourceKind::separate_image        ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
-                                                                           : VK_DESCRIPTOR_TYPE_SAMPLER;
-      counts[t] += std::max(1u, r.array_size);
-    }
-  }
-  std::vector<VkDescriptorPoolSize> sizes;
-  for (auto [type, n] : counts) {
-    if (n) sizes.push_back({type, n});
-  }
-  if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
-  VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = std::max(1u, sets);
-  info.poolSizeCount = uint32_t(sizes.size());
-  info.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  if (VkResult r = vkCreateDescriptorPool(device, &info, nullptr, &pool); r != VK_SUCCESS) {
-    return unexpected(error("cannot create a descriptor pool: " + vk_result_name(r)));
-  }
-  return pool;
-}
 
 glm::vec3 tonemap(glm::vec3 c, Tonemap mode) {
   c = glm::max(c, glm::vec3(0));
@@ -814,6 +789,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   if (Result<void, std::string> cookies = resources.load_cookies(scene); !cookies) return unexpected(error(cookies.error()));
   Result<DrawListResult, RenderError> list = build_draws(context, scene, objects, lights, library);
   if (!list) return unexpected(list.error());
+  frame.stats.instanced_away = merge_instanced_draws(list->draws, objects);
   std::unique_ptr<GpuMesh> quad;
   if (!scene.post.empty() || scene.camera.clear_sky) {
     Result<GpuMesh, RenderError> q = upload_mesh(context, *builtin_mesh("quad"));
@@ -965,15 +941,10 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     if (!made) return unexpected(made.error());
     post_pipelines = std::move(*made);
   }
-  std::vector<const std::vector<Draw>*> all_lists = {&list->draws, post ? &post->list.draws : &no_draws, &list->gbuffer,
-                                                     deferred ? &deferred->list.draws : &no_draws,
-                                                     &screen_shadows.list.draws};
-  for (const auto& map : shadows.maps) all_lists.push_back(&map->casters.draws);
-  Result<VkDescriptorPool, RenderError> pool = make_pool(context.device(), all_lists);
-  if (!pool) return unexpected(pool.error());
-  fo.pool = *pool;
+  DescriptorPools pools(context.device());
   UniformArena arena(context);
-  Recorder recorder{context, resources, arena, fo.pool};
+  Recorder recorder{context, resources, arena, pools};
+  recorder.instance_owners = &objects;
   recorder.shadows = &shadows;
   recorder.screen_shadows = &screen_shadows;
   if (!shadows.maps.empty() || deferred) {
@@ -1022,9 +993,9 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
     frame.stats.triangles += *shadow_triangles;
     VkViewport viewport{0, 0, float(frame.width), float(frame.height), 0, 1};
     VkRect2D scissor{{0, 0}, {uint32_t(frame.width), uint32_t(frame.height)}};
-    // Binds `mesh` (unless it is bound already) and draws all of it.
+    // Binds `mesh` (unless it is bound already) and draws all of it, `instances` times.
     const GpuMesh* bound_mesh = nullptr;
-    auto draw_mesh = [&](const GpuMesh& mesh) {
+    auto draw_mesh = [&](const GpuMesh& mesh, uint32_t instances = 1) {
       if (bound_mesh != &mesh) {
         VkBuffer vb = mesh.vertices.handle();
         VkDeviceSize offset = 0;
@@ -1032,8 +1003,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
         vkCmdBindIndexBuffer(commands, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         bound_mesh = &mesh;
       }
-      vkCmdDrawIndexed(commands, mesh.index_count, 1, 0, 0, 0);
-      frame.stats.triangles += mesh.index_count / 3;
+      vkCmdDrawIndexed(commands, mesh.index_count, instances, 0, 0, 0);
+      frame.stats.triangles += uint64_t(mesh.index_count / 3) * instances;
     };
     // Draws `draws` [first, last) with `pipelines` in a render pass already begun.
     auto draw_all = [&](const std::vector<Draw>& draws, const std::vector<VkPipeline>& draw_pipelines,
@@ -1140,8 +1111,12 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
         failed = bound.error();
         break;
       }
-      if (captured) options.capture->draws.push_back(std::move(*captured));
-      draw_mesh(*object.mesh);
+      const uint32_t instances = uint32_t(std::max<size_t>(1, d.instances.size()));
+      if (captured) {
+        captured->instances = instances;
+        options.capture->draws.push_back(std::move(*captured));
+      }
+      draw_mesh(*object.mesh, instances);
       if (deferred && object.background) vkCmdSetViewport(commands, 0, 1, &viewport);
     }
     vkCmdEndRenderPass(commands);
@@ -1220,7 +1195,9 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   frame.stats.gbuffer_draws = list->gbuffer.size();
   for (Draw& d : list->draws) {
     frame.stats.additive_draws += d.record.additive;
+    frame.stats.instanced_draws += d.instances.size() > 1;
     frame.draws.push_back(std::move(d.record));
+    for (DrawRecord& r : d.instance_records) frame.draws.push_back(std::move(r));
   }
   frame.stats.draws = list->draws.size() + frame.stats.shadow_draws + frame.stats.depth_texture_draws +
                       frame.stats.gbuffer_draws + frame.stats.deferred_lights + frame.stats.screen_shadow_masks;

@@ -313,7 +313,7 @@ struct Reader {
     if (post_pass) {
       check_keys(j, path, {"shader", "properties", "keywords", "pass"});
     } else {
-      check_keys(j, path, {"shader", "properties", "keywords", "queue"});
+      check_keys(j, path, {"shader", "properties", "keywords", "queue", "instancing"});
     }
     SceneMaterial m;
     m.json_path = path;
@@ -336,6 +336,10 @@ struct Reader {
       for (size_t i = 0; i < k.size(); ++i) m.keywords.push_back(text(k[i], index(join(path, "keywords"), i)));
     }
     if (j.contains("queue")) m.queue = integer(member(j, "queue"), join(path, "queue"), 0, 5000);
+    if (j.contains("instancing")) {
+      if (!member(j, "instancing").is_boolean()) throw Bad{join(path, "instancing"), "expected true or false"};
+      m.instancing = member(j, "instancing").get<bool>();
+    }
     return m;
   }
 

@@ -62,6 +62,7 @@ struct CapturedDraw {
   size_t mesh = 0;     // into FrameCapture::meshes
   PipelineState state;
   bool mirrored = false;  // front face counter-clockwise
+  uint32_t instances = 1;  // GPU instancing: the mesh drawn this many times
   std::vector<CapturedDescriptor> descriptors;
 };
 

@@ -87,6 +87,8 @@ struct DrawRecord {
 struct RenderStats {
   uint64_t draws = 0;               // shadow-map and depth-texture draws included
   uint64_t additive_draws = 0;
+  uint64_t instanced_draws = 0;    // draws of several objects at once (GPU instancing)
+  uint64_t instanced_away = 0;     // the draws those replaced, less one each: `draws` counts draw calls
   uint64_t gbuffer_draws = 0;    // the deferred path's Deferred passes into the G-buffer
   uint64_t deferred_lights = 0;  // the deferred path's light draws (one a light)
   uint64_t shadow_maps = 0;         // lights whose shadow map was rendered

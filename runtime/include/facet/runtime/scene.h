@@ -167,6 +167,11 @@ struct SceneMaterial {
   std::vector<SceneProperty> properties;
   std::vector<std::string> keywords;
   std::optional<int> queue;         // render queue override
+  // Unity's Material.enableInstancing: INSTANCING_ON for the passes that
+  // declare it (multi_compile_instancing), and consecutive draws of the
+  // same mesh, pass variant, light and material values drawn as one
+  // instanced draw (docs/rendering.md, "GPU instancing").
+  bool instancing = false;
 };
 
 struct SceneObject {
