@@ -13,9 +13,9 @@
 //     included;
 //   - host KB per object: the growth of the process's resident memory from
 //     before the render to its last frame (facet's own render, without the
-//     capture or the bare loop), over the objects; and what each object
-//     added since the previous count (the fixed part, pipelines and the
-//     driver's, left out).
+//     capture or the bare loop), over the objects; what each object added
+//     since the previous count (the fixed part, pipelines and the driver's,
+//     left out); and malloc's bytes in use, grown likewise, over the objects.
 // Each count is measured twice: the objects drawn one by one, and with GPU
 // instancing (the material's "instancing": up to 128 objects a draw, each
 // with its own colour either way); the last table compares the two per
@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <malloc.h>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -113,6 +114,7 @@ struct Row {
   double facet_frame_ms = 0, bare_frame_ms = 0;
   double kb_per_object = 0;
   double growth_bytes = 0;  // of resident memory, the whole render
+  double heap_bytes = 0;    // of malloc's bytes in use (facet's and the driver's allocations)
 };
 
 Result<Row, std::string> measure(runtime::Context& context, const Options& o, int count, bool instancing) {
@@ -126,13 +128,17 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
   Row row{.objects = count};
   // Memory: facet's render alone, sampled at its last frame.
   const double before = resident_bytes();
-  double during = before;
+  const double heap_before = double(mallinfo2().uordblks);
+  double during = before, heap_during = heap_before;
   render.frames = 3;
   render.after_frame = [&](int f) {
-    if (f == render.frames - 1) during = resident_bytes();
+    if (f != render.frames - 1) return;
+    during = resident_bytes();
+    heap_during = double(mallinfo2().uordblks);
   };
   if (auto r = runtime::render_scene(context, scene, render); !r) return unexpected(r.error().message);
   row.growth_bytes = std::max(0.0, during - before);
+  row.heap_bytes = std::max(0.0, heap_during - heap_before);
   row.kb_per_object = row.growth_bytes / 1024 / count;
   // The bare loop draws facet's first frame, captured.
   runtime::FrameCapture capture;
@@ -192,9 +198,9 @@ int main(int argc, char** argv) {
   std::vector<Row> rows[2];
   for (bool instancing : {false, true}) {
     std::cout << (instancing ? "\nGPU instancing (up to 128 objects a draw)\n" : "separate draws\n");
-    std::cout << fmt::format("{:>8} {:>8} {:>14} {:>13} {:>11} {:>14} {:>13} {:>11} {:>13}\n", "objects", "draws",
+    std::cout << fmt::format("{:>8} {:>8} {:>14} {:>13} {:>11} {:>14} {:>13} {:>11} {:>13} {:>12}\n", "objects", "draws",
                              "facet CPU µs", "bare CPU µs", "facet/bare", "facet frame ms", "bare frame ms",
-                             "host KB/obj", "KB/obj added");
+                             "host KB/obj", "KB/obj added", "heap KB/obj");
     for (int count : o.counts) {
       auto row = measure(**context, o, count, instancing);
       if (!row) {
@@ -208,10 +214,10 @@ int main(int argc, char** argv) {
         added = fmt::format("{:.2f}", (row->growth_bytes - done.back().growth_bytes) / 1024 /
                                           double(row->objects - done.back().objects));
       }
-      std::cout << fmt::format("{:>8} {:>8} {:>14.3f} {:>13.3f} {:>11.2f} {:>14.3f} {:>13.3f} {:>11.2f} {:>13}\n",
+      std::cout << fmt::format("{:>8} {:>8} {:>14.3f} {:>13.3f} {:>11.2f} {:>14.3f} {:>13.3f} {:>11.2f} {:>13} {:>12.2f}\n",
                                row->objects, row->draws, row->facet_cpu_us, row->bare_cpu_us,
                                row->facet_cpu_us / row->bare_cpu_us, row->facet_frame_ms, row->bare_frame_ms,
-                               row->kb_per_object, added)
+                               row->kb_per_object, added, row->heap_bytes / 1024 / row->objects)
                 << std::flush;
       rows[instancing].push_back(*row);
     }

@@ -424,7 +424,8 @@ struct Recorder {
   // The frame, light and material sets are shared by every draw whose set
   // has the same layout, frame layer and contents (its blocks' bytes, its
   // images, views and samplers): written once, bound by each, refilled once.
-  std::map<std::string, VkDescriptorSet> shared_sets;
+  // Needed only while the first frame makes the sets (done_making_sets()).
+  std::unordered_map<std::string, VkDescriptorSet> shared_sets;
   // What is bound, so that a draw rebinds only the sets that differ.
   VkPipelineLayout bound_layout = VK_NULL_HANDLE;
   Sets bound_sets{};
@@ -435,6 +436,10 @@ struct Recorder {
     if (zeros.size() < program.push_constant_bytes) zeros.resize(program.push_constant_bytes);
     vkCmdPushConstants(commands, program.layout, program.push_stages, 0, program.push_constant_bytes, zeros.data());
   }
+
+  // After the first frame every draw has its sets: the keys that found
+  // shared ones are not needed again.
+  void done_making_sets() { std::unordered_map<std::string, VkDescriptorSet>().swap(shared_sets); }
 
   // At the start of each frame's recording: the frame members of every kept
   // block rewritten, and nothing known to be bound in the new command buffer.
@@ -913,8 +918,8 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
   }
   ShadowPasses shadows;
   // The maps some drawn variant samples: forward receivers', and the deferred light pass's.
-  std::vector<Draw> receivers = list->draws;
-  if (deferred) receivers.insert(receivers.end(), deferred->list.draws.begin(), deferred->list.draws.end());
+  std::vector<const std::vector<Draw>*> receivers = {&list->draws};
+  if (deferred) receivers.push_back(&deferred->list.draws);
   FACET_TRY(prepare_shadow_maps(context, scene, objects, lights, shadow_views, receivers, library, fo.cache, shadows,
                                 frame.stats.pipelines));
   // The directional lights whose receivers read a screen-space mask.
@@ -1172,6 +1177,7 @@ Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& s
                                          VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
       frame.stats.frame_gpu_ms.push_back(double(stamps[1] - stamps[0]) * context.device_info().timestamp_period_ns / 1e6);
     }
+    if (f == 0) recorder.done_making_sets();
     if (options.after_frame) options.after_frame(f);
   }
   if (!frame.stats.frame_gpu_ms.empty()) frame.stats.gpu_ms = median(frame.stats.frame_gpu_ms);

@@ -98,11 +98,12 @@ Result<VkRenderPass, RenderError> make_cube_pass(VkDevice device) {
   return *pass;
 }
 
-bool light_is_sampled(const LightValues* light, const std::vector<Draw>& draws) {
-  return std::any_of(draws.begin(), draws.end(),
-                     [&](const Draw& d) {
-                       return d.light && d.light->scene_light() == light && samples_shadow_map(d.record.keywords);
-                     });
+bool light_is_sampled(const LightValues* light, const std::vector<const std::vector<Draw>*>& receivers) {
+  return std::any_of(receivers.begin(), receivers.end(), [&](const std::vector<Draw>* draws) {
+    return std::any_of(draws->begin(), draws->end(), [&](const Draw& d) {
+      return d.light && d.light->scene_light() == light && samples_shadow_map(d.record.keywords);
+    });
+  });
 }
 
 Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
@@ -297,13 +298,13 @@ const ShadowMap* ShadowPasses::camera_depth() const {
 
 Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
                                               const LightSetup& lights, const std::vector<ShadowView>& views,
-                                              const std::vector<Draw>& draws, ShaderLibrary& library,
+                                              const std::vector<const std::vector<Draw>*>& receivers, ShaderLibrary& library,
                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
   out.device = context.device();
   uint32_t size = uint32_t(scene.shadow_resolution);
   for (const ShadowView& view : views) {
     const LightValues* light = &lights.lights[view.light];
-    if (!light_is_sampled(light, draws)) continue;
+    if (!light_is_sampled(light, receivers)) continue;
     if (!view.faces.empty()) {
       FACET_TRY(prepare_cube(context, scene, objects, light, view, library, cache, out, pipelines_created));
       continue;

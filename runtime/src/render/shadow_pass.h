@@ -75,7 +75,7 @@ struct ShadowPasses {
 // (samples_shadow_map), with the caster draws and their pipelines.
 Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
                                               const LightSetup& lights, const std::vector<ShadowView>& views,
-                                              const std::vector<Draw>& draws, ShaderLibrary& library,
+                                              const std::vector<const std::vector<Draw>*>& receivers, ShaderLibrary& library,
                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
 
 // Adds the camera depth texture: the ShadowCaster passes of the opaque
