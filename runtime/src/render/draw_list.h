@@ -40,7 +40,13 @@ struct ObjectState {
   ShaderAsset* shader = nullptr;
   Material material;
   glm::mat4 model{1};
+  // The object's per-draw values. With `model_values` (a scene object) its
+  // matrices (draw_uniforms of `model`) are computed when its sets are
+  // written, not kept, and `draw` holds only what adds to them (the
+  // reflection probes'); the sky, image effects and full-screen passes keep
+  // their whole layer here.
   UniformValues draw;
+  bool model_values = false;
   // The reflection probes' cubes unity_SpecCube0/1 bind (null: the environment).
   std::array<const Image*, 2> probes{};
   GpuMesh* mesh = nullptr;

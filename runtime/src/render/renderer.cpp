@@ -384,7 +384,7 @@ struct Loader {
     if (!m) return unexpected(m.error());
     s.mesh = *m;
     s.model = transform_matrix(o.transform);
-    s.draw = draw_uniforms(s.model);
+    s.model_values = true;
     s.mirrored = glm::determinant(glm::mat3(s.model)) < 0;
     const Bounds& b = s.mesh->bounds;
     s.center = glm::vec3(s.model * glm::vec4(b.center[0], b.center[1], b.center[2], 1));
@@ -416,7 +416,7 @@ struct Recorder {
     std::vector<MemberSource> frame_members;
   };
   using Sets = std::array<VkDescriptorSet, kSetCount>;
-  static constexpr size_t kFrameLayer = 3;  // in the layers of bind()
+  static constexpr size_t kFrameLayer = 4;  // in the layers of bind()
   static constexpr uint32_t kPerDrawSet = 3;  // the object's set: never shared
   std::unordered_map<const Draw*, Sets> retained;
   const std::vector<ObjectState>* instance_owners = nullptr;  // what Draw::instances index
@@ -528,12 +528,17 @@ struct Recorder {
       bind_sets(commands, program, it->second);
       return {};
     }
-    UniformLayers layers = {&object.draw, &draw.light->values, &object.material.uniforms, &frame};
+    // The object's, light's, material's and frame's values, first found first.
+    std::vector<UniformValues> model_values(std::max<size_t>(1, draw.instances.size()));
+    auto layers_of = [&](const ObjectState& o, UniformValues& model) -> UniformLayers {
+      if (o.model_values) model = draw_uniforms(o.model);
+      return {&o.draw, o.model_values ? &model : nullptr, &draw.light->values, &o.material.uniforms, &frame};
+    };
+    UniformLayers layers = layers_of(object, model_values[0]);
     // An instanced draw's objects, each with its own layers (the draw's object alone when not merged).
     std::vector<UniformLayers> instances;
-    for (size_t k : draw.instances) {
-      const ObjectState& o = (*instance_owners)[k];
-      instances.push_back({&o.draw, &draw.light->values, &o.material.uniforms, &frame});
+    for (size_t i = 0; i < draw.instances.size(); ++i) {
+      instances.push_back(i == 0 ? layers : layers_of((*instance_owners)[draw.instances[i]], model_values[i]));
     }
     if (instances.empty()) instances.push_back(layers);
     const bool screen_shadowed = reads_screen_shadows(draw);
