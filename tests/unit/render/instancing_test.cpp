@@ -106,6 +106,17 @@ TEST_F(InstancingTest, AnotherMeshOrSharedValueIsNotInstancedWithTheRest) {
   }
 }
 
+// 300 objects drawn one by one need more descriptor sets than one pool
+// holds (256): the pools grow, and the image is the instanced one.
+TEST_F(InstancingTest, ManyObjectsDrawnSeparatelyFillSeveralDescriptorPools) {
+  const std::string shader = example_shader("Instanced.shader");
+  RenderedFrame separate = render(grid(shader, 300, false));
+  RenderedFrame instanced = render(grid(shader, 300, true));
+  EXPECT_EQ(separate.stats.draws, 300u);
+  EXPECT_EQ(instanced.stats.draws, 3u);
+  EXPECT_TRUE(instanced.ldr == separate.ldr) << "the instanced image differs from the one drawn object by object";
+}
+
 TEST(InstancingScene, InstancingMustBeABoolean) {
   auto scene = parse_scene(R"({"camera": {}, "objects": [{"mesh": "cube", "material": {"shader": ")" +
                                example_shader("Instanced.shader") + R"(", "instancing": 1}}]})",
