@@ -9,8 +9,8 @@
 // of every such array from the i-th object of the instanced draw, by member
 // name (docs/rendering.md, "GPU instancing"). Without INSTANCING_ON the
 // macros expand to what Unity gives when instancing is off, and instanced
-// properties are plain material uniforms ("$Globals"). Single-pass stereo is
-// not implemented: its macros are the non-stereo ones.
+// properties are plain material uniforms ("$Globals"). Single-pass stereo
+// stays off, as facet renders one view: its macros are the non-stereo ones.
 // UNITY_ACCESS_INSTANCED_PROP takes Unity 2017.4+'s two arguments (buffer,
 // name); the one-argument form of 5.6/2017.1 cannot share the name (glslang
 // has no variadic macros).

@@ -48,14 +48,21 @@ bool same_material(const Material& a, const Material& b, const std::vector<std::
   return true;
 }
 
-bool can_join(const Draw& first, const Draw& d, const std::vector<ObjectState>& objects,
-              const std::vector<std::string>& names) {
+// What a run's first draw shares with the draws that may join it, worked
+// out once per run.
+struct Run {
+  const GpuProgram* program = nullptr;
+  std::vector<std::string> names;  // its per-instance names
+  std::string state;               // describe() of its fixed-function state
+};
+
+bool can_join(const Draw& first, const Run& run, const Draw& d, const std::vector<ObjectState>& objects) {
   const ObjectState& a = objects[first.object];
   const ObjectState& b = objects[d.object];
   return has_instancing_on(d) && d.variant == first.variant && d.pass == first.pass && d.light == first.light &&
-         describe(d.state) == describe(first.state) && d.grab_before.empty() && a.mesh == b.mesh && a.mirrored == b.mirrored &&
-         a.shader == b.shader && !b.probes[0] && !b.probes[1] && !b.background &&
-         same_material(a.material, b.material, names);
+         d.grab_before.empty() && a.mesh == b.mesh && a.mirrored == b.mirrored && a.shader == b.shader &&
+         !b.probes[0] && !b.probes[1] && !b.background && describe(d.state) == run.state &&
+         same_material(a.material, b.material, run.names);
 }
 
 }  // namespace
@@ -66,22 +73,27 @@ size_t merge_instanced_draws(std::vector<Draw>& draws, const std::vector<ObjectS
   std::vector<Draw> out;
   out.reserve(draws.size());
   size_t merged = 0;
-  std::vector<std::string> names;  // the per-instance names of out.back()'s variant
+  Run run;  // of out.back(), when it can start one
+  bool open = false;
   for (Draw& d : draws) {
-    if (!out.empty()) {
+    if (open && std::max<size_t>(1, out.back().instances.size()) < kMaxInstances && can_join(out.back(), run, d, objects)) {
       Draw& first = out.back();
-      const ObjectState& owner = objects[first.object];
-      if (has_instancing_on(first) && !owner.probes[0] && !owner.probes[1] && !owner.background &&
-          std::max<size_t>(1, first.instances.size()) < kMaxInstances && can_join(first, d, objects, names)) {
-        if (first.instances.empty()) first.instances.push_back(first.object);
-        first.instances.push_back(d.object);
-        d.record.why += fmt::format("; instanced: drawn by draw of {} (GPU instancing)", first.record.object);
-        first.instance_records.push_back(std::move(d.record));
-        ++merged;
-        continue;
-      }
+      if (first.instances.empty()) first.instances.push_back(first.object);
+      first.instances.push_back(d.object);
+      d.record.why += fmt::format("; instanced: drawn by draw of {} (GPU instancing)", first.record.object);
+      first.instance_records.push_back(std::move(d.record));
+      ++merged;
+      continue;
     }
-    if (has_instancing_on(d)) names = per_instance_names(*d.variant->program);
+    const ObjectState& owner = objects[d.object];
+    open = has_instancing_on(d) && !owner.probes[0] && !owner.probes[1] && !owner.background;
+    if (open) {
+      if (run.program != d.variant->program.get()) {
+        run.program = d.variant->program.get();
+        run.names = per_instance_names(*run.program);
+      }
+      run.state = describe(d.state);
+    }
     out.push_back(std::move(d));
   }
   for (Draw& d : out) {
