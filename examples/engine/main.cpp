@@ -7,10 +7,10 @@
 //
 // The package must be of examples/shaders/Keywords.shader (its _Color,
 // _EmissionColor and _EMISSION). Variants are selected strictly: a keyword
-// set the package lacks is an error. A ShaderStore keeps the package, its
-// variants' GPU programs and their pipelines from frame to frame; the rest
-// of each frame (meshes, targets, descriptor sets) is still created by
-// render_scene.
+// set the package lacks is an error. One Renderer draws every frame: it
+// keeps the package, meshes, targets, pipelines, descriptor pools and
+// uniform buffers, and updates the kept frame for each frame's changes; it
+// prints what the frames after the first created.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -116,19 +116,27 @@ int main(int argc, char** argv) {
     return 1;
   }
   Scene scene = grid_scene(args.package, args.objects);
-  std::shared_ptr<ShaderStore> shaders = make_shader_store();
+  auto renderer = Renderer::create(**context, {.strict_variants = true});
+  if (!renderer) {
+    std::fprintf(stderr, "facet_engine: %s\n", renderer.error().message.c_str());
+    return 1;
+  }
   RenderedFrame last;
-  uint64_t compiled = 0, loaded = 0;
+  uint64_t compiled = 0, loaded = 0, created_after_first = 0, updated = 0;
   for (int frame = 0; frame < args.frames; ++frame) {
     animate(scene, frame);
-    auto rendered = render_scene(**context, scene, {.strict_variants = true, .shaders = shaders});
-    if (!rendered) {
+    if (auto rendered = (*renderer)->render(scene, last, {.records = false}); !rendered) {
       std::fprintf(stderr, "facet_engine: frame %d: %s\n", frame, rendered.error().message.c_str());
       return 1;
     }
-    compiled += rendered->stats.variants_compiled;
-    loaded += rendered->stats.shaders_loaded;
-    last = std::move(*rendered);
+    const RenderStats& stats = last.stats;
+    compiled += stats.variants_compiled;
+    loaded += stats.shaders_loaded;
+    updated += stats.frame_path == FramePath::updated;
+    if (frame > 0) {
+      created_after_first += stats.pipelines + stats.descriptor_pools_created + stats.uniform_buffers_created +
+                             stats.meshes_loaded + stats.textures_loaded;
+    }
   }
   if (auto written = write_png(last, args.out); !written) {
     std::fprintf(stderr, "facet_engine: %s\n", written.error().message.c_str());
@@ -137,6 +145,8 @@ int main(int argc, char** argv) {
   std::printf("frames: %d, objects: %d, draws in the last frame: %zu, shaders loaded: %llu, variants compiled: %llu\n",
               args.frames, args.objects, size_t(last.stats.draws), (unsigned long long)loaded,
               (unsigned long long)compiled);
+  std::printf("frames updated in place: %llu, GPU objects created after the first frame: %llu\n",
+              (unsigned long long)updated, (unsigned long long)created_after_first);
   if (args.validation) {
     std::printf("validation messages: %zu\n", (*context)->messages().size());
     if (!(*context)->messages().empty()) {

@@ -3,7 +3,8 @@
 # CMake project against it (find_package(facet) -> facet::runtime), builds
 # the package it draws with the installed facetc, runs 300 frames of 1,000
 # objects with validation on, and compares the last frame with
-# tests/engine/last_frame.png (FACET_UPDATE_GOLDENS=1 writes it).
+# tests/engine/last_frame.png (FACET_UPDATE_GOLDENS=1 writes it). One
+# Renderer draws all frames, updating the frame it keeps.
 # Usage: run_engine_test.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
 build=$1 source=$2 work=$3
@@ -25,7 +26,7 @@ nm -C "$work/build/facet_engine" > "$work/symbols.txt"
 if grep -E 'glslang::|spvtools::|spirv_cross::|spv::|facet::Compiler::|facet::backend::' "$work/symbols.txt"; then
   echo "facet_engine holds compiler code"; exit 1
 fi
-grep -q 'facet::runtime::render_scene' "$work/symbols.txt" || { echo "no symbols to read in facet_engine"; exit 1; }
+grep -q 'facet::runtime::Renderer::render' "$work/symbols.txt" || { echo "no symbols to read in facet_engine"; exit 1; }
 export FACET_STDLIB_DIR="$work/prefix/share/facet/stdlib"
 # lavapipe's memory, unloaded before exit, cannot be matched by tests/lsan.supp
 # (run_add_shaders_test.sh says why); facet's own is checked in process.
@@ -35,6 +36,10 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 grep -q "^frames: 300, objects: 1000, " "$work/out.txt" || { echo "not 300 frames of 1000 objects"; exit 1; }
 grep -q "shaders loaded: 1, " "$work/out.txt" || { echo "the package was loaded more than once"; exit 1; }
 grep -q "^validation messages: 0$" "$work/out.txt" || { echo "validation messages"; exit 1; }
+# Every frame after the first updates the kept one in place (FramePath::updated)
+# and creates no GPU object: frame 0 drew both variants of every draw.
+grep -q "^frames updated in place: 299, GPU objects created after the first frame: 0$" "$work/out.txt" ||
+  { echo "a frame was prepared anew or created GPU objects"; exit 1; }
 golden="$source/tests/engine/last_frame.png"
 if [[ ${FACET_UPDATE_GOLDENS:-0} == 1 ]]; then
   cp "$work/last.png" "$golden"

@@ -46,8 +46,8 @@ Result<VkDescriptorSet, std::string> DescriptorPools::allocate(VkDescriptorSetLa
   allocate.descriptorSetCount = 1;
   allocate.pSetLayouts = &layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
-  if (!pools_.empty()) {
-    allocate.descriptorPool = pools_.back();
+  for (; current_ < pools_.size(); ++current_) {
+    allocate.descriptorPool = pools_[current_];
     VkResult r = vkAllocateDescriptorSets(device_, &allocate, &set);
     if (r == VK_SUCCESS) return set;
     if (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL) {
@@ -55,11 +55,17 @@ Result<VkDescriptorSet, std::string> DescriptorPools::allocate(VkDescriptorSetLa
     }
   }
   if (Result<void, std::string> added = add_pool(bindings); !added) return unexpected(added.error());
+  current_ = pools_.size() - 1;
   allocate.descriptorPool = pools_.back();
   if (VkResult r = vkAllocateDescriptorSets(device_, &allocate, &set); r != VK_SUCCESS) {
     return unexpected("cannot allocate a descriptor set: " + vk_result_name(r));
   }
   return set;
+}
+
+void DescriptorPools::reset() {
+  for (VkDescriptorPool pool : pools_) vkResetDescriptorPool(device_, pool, 0);
+  current_ = 0;
 }
 
 }  // namespace facet::runtime

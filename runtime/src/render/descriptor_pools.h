@@ -23,12 +23,17 @@ class DescriptorPools {
   // made when the current one is full.
   Result<VkDescriptorSet, std::string> allocate(VkDescriptorSetLayout layout,
                                                 const std::vector<VkDescriptorSetLayoutBinding>& bindings);
+  // Frees every set (none may be in use by the GPU): later allocations
+  // fill the pools there are before a new one is made.
+  void reset();
+  size_t pools_created() const { return pools_.size(); }
 
  private:
   Result<void, std::string> add_pool(const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 
   VkDevice device_;
   std::vector<VkDescriptorPool> pools_;
+  size_t current_ = 0;  // the pool allocations come from; those before it are full
 };
 
 }  // namespace facet::runtime

@@ -133,6 +133,7 @@ size_t ShaderLibrary::forget_changed() {
       ++it;
     }
   }
+  forgotten_total_ += forgotten;
   return forgotten;
 }
 

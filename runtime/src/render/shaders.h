@@ -92,6 +92,9 @@ class ShaderLibrary {
   // (its next use loads it again); returns how many. The GPU must be done
   // with their programs.
   size_t forget_changed();
+  // How many shaders forget_changed has forgotten in all: a frame drawn
+  // with the library's programs is stale once it grows.
+  uint64_t forgotten_total() const { return forgotten_total_; }
   // Starts a render's accounting: load and compile time, loads, misses.
   void begin_render() {
     ++renders_;
@@ -136,6 +139,7 @@ class ShaderLibrary {
   double seconds_ = 0;
   size_t loads_ = 0;
   uint64_t renders_ = 0;
+  uint64_t forgotten_total_ = 0;
   std::set<std::string> used_;  // paths load() was asked for since begin_render
   bool strict_variants_ = false;
   std::vector<std::string> misses_;

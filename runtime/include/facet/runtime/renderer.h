@@ -4,9 +4,18 @@
 // .shader files whose variants are compiled when a draw first needs them;
 // nothing else is compiled.
 //
+// One frame, everything made for it and released after:
+//
 //   auto scene = runtime::load_scene("examples/scenes/unlit.json");
 //   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler()});
 //   runtime::write_png(*frame, "out.png");
+//
+// An engine's loop: a Renderer keeps the frame it drew and draws the next
+// one by updating it (docs/library.md):
+//
+//   auto renderer = runtime::Renderer::create(*context, {.strict_variants = true});
+//   runtime::RenderedFrame frame;
+//   for (...) { change(scene); (*renderer)->render(scene, frame, {.records = false}); }
 #pragma once
 
 #include <cstdint>
@@ -84,6 +93,14 @@ struct DrawRecord {
   std::string why;
 };
 
+// What a Renderer kept from its previous render (RenderStats::frame_path).
+enum class FramePath {
+  prepared,  // everything loaded, built and created for this scene
+  updated,   // the draw list rebuilt for changed objects, materials, lights or camera; GPU objects kept
+  repeated,  // drawn again as it was: only the scene's time changed
+};
+std::string_view frame_path_name(FramePath path);  // "prepared", "updated", "repeated"
+
 struct RenderStats {
   uint64_t draws = 0;               // shadow-map and depth-texture draws included
   uint64_t additive_draws = 0;
@@ -108,6 +125,17 @@ struct RenderStats {
   std::vector<double> frame_gpu_ms; // per frame, from timestamps
   double compile_ms = 0;           // loading and compiling shaders
   double total_ms = 0;
+  // What this render kept from the Renderer's previous one, and why it
+  // prepared anew ("" for a first render and when it kept the frame).
+  FramePath frame_path = FramePath::prepared;
+  std::string prepared_because;
+  // GPU objects this render created besides pipelines (which `pipelines`
+  // counts): meshes uploaded, descriptor pools and uniform buffers. A
+  // repeated or updated frame whose draws the renderer has seen before
+  // creates none.
+  uint64_t meshes_loaded = 0;
+  uint64_t descriptor_pools_created = 0;
+  uint64_t uniform_buffers_created = 0;
 };
 
 struct RenderedFrame {
@@ -127,6 +155,60 @@ struct RenderError {
 };
 
 Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options);
+
+struct RendererOptions {
+  // Loads and compiles .shader files; empty: packages only (RenderOptions).
+  std::shared_ptr<const ShaderCompiler> shader_compiler;
+  bool strict_variants = false;  // as RenderOptions::strict_variants
+  // Shaders shared with other renders (make_shader_store); empty: the
+  // renderer keeps its own.
+  std::shared_ptr<ShaderStore> shaders;
+};
+
+// What one Renderer::render draws and returns.
+struct FrameOptions {
+  int width = 0, height = 0;  // 0: the scene's size
+  int frames = 1;             // as RenderOptions::frames
+  FrameCapture* capture = nullptr;
+  std::function<void(int frame)> after_frame;
+  // Fill RenderedFrame::draws and compiled (--explain, tests); an engine's
+  // loop leaves them out and keeps the counts in stats.
+  bool records = true;
+};
+
+// A renderer that keeps what it made from one render to the next, for an
+// engine's or an editor's loop. Each render compares the scene with the one
+// it drew last:
+//   - only the time changed: the frame is drawn again as it was, its time
+//     and camera uniforms rewritten (FramePath::repeated);
+//   - objects, transforms, materials (values, textures, keywords, queue),
+//     lights or the camera changed, in a forward scene without shadows,
+//     image effects, GrabPasses, reflection probes or a sky background: the
+//     objects and draw list are built again and drawn with the targets,
+//     pipelines, descriptor pools and uniform buffers kept, which it only
+//     adds to for draws it has not seen (FramePath::updated);
+//   - anything else (the size, the environment, shadows, ...): prepared
+//     anew, as render_scene does, and RenderStats::prepared_because says why.
+// Shaders are kept as a ShaderStore keeps them, and reloaded when their
+// files change. The renderer holds GPU objects of its Context: destroy it
+// first. One render at a time; see docs/runtime.md.
+class Renderer {
+ public:
+  static Result<std::unique_ptr<Renderer>, RenderError> create(Context& context, RendererOptions options = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws `scene` into `out`, whose buffers are reused (nothing in it is
+  // kept: it is cleared first). On an error the kept frame is dropped: the
+  // next render prepares anew.
+  Result<void, RenderError> render(const Scene& scene, RenderedFrame& out, const FrameOptions& options = {});
+
+ private:
+  struct State;
+  explicit Renderer(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
 
 // Writes through a temporary file and a rename: no partial file on failure.
 Result<void, RenderError> write_png(const RenderedFrame& frame, const std::string& path);

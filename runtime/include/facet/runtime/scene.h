@@ -33,6 +33,7 @@ struct Transform {
   Vec3 rotation{0, 0, 0};
   Vec3 scale{1, 1, 1};
   std::optional<Vec3> look_at;
+  bool operator==(const Transform&) const = default;
 };
 
 enum class Projection { perspective, orthographic };
@@ -50,6 +51,7 @@ struct SceneCamera {
   // shader has a LightMode Deferred pass into a G-buffer and lights them
   // there; everything else is drawn forward after it.
   bool deferred = false;
+  bool operator==(const SceneCamera&) const = default;
 };
 
 // A texture a property names: a built-in ("white", "black", "gray", "bump",
@@ -64,6 +66,7 @@ struct SceneTexture {
   // (metallic x B, 0, 0, 1 - roughness x G) (docs/scene-format.md).
   std::optional<std::array<float, 2>> gltf_metallic_roughness;
   std::array<float, 2> scale{1, 1}, offset{0, 0};
+  bool operator==(const SceneTexture&) const = default;
 };
 
 enum class LightType { directional, point, spot };
@@ -95,6 +98,7 @@ struct SceneLight {
   std::optional<SceneTexture> cookie;
   float cookie_size = 10;   // directional, world units (Unity's Light.cookieSize)
   LightRenderMode render_mode = LightRenderMode::automatic;
+  bool operator==(const SceneLight&) const = default;
 };
 
 // A procedural sky for the ambient light (sRGB-authored colours): radiance
@@ -107,12 +111,14 @@ struct SceneSkySun {
   int light = 0;           // into scene.lights: a directional light
   float size = 1.5f;       // angular diameter, degrees
   float intensity = 20;    // radiance per unit of the light's linear colour x intensity
+  bool operator==(const SceneSkySun&) const = default;
 };
 
 struct SceneSky {
   Vec3 zenith{0.2f, 0.45f, 0.8f}, horizon{0.75f, 0.8f, 0.85f}, ground{0.3f, 0.27f, 0.22f};
   float intensity = 1;
   std::optional<SceneSkySun> sun;
+  bool operator==(const SceneSky&) const = default;
 };
 
 // The environment every object reflects (docs/scene-format.md): an
@@ -125,6 +131,7 @@ struct SceneEnvironment {
   float intensity = 1;
   float rotation = 0;         // degrees about +Y, as Skybox/Panoramic's _Rotation
   int resolution = 128;       // texels a side of the cube's faces (a power of two)
+  bool operator==(const SceneEnvironment&) const = default;
 };
 
 // A reflection probe (Unity's ReflectionProbe, rendered once when the scene
@@ -140,6 +147,7 @@ struct SceneReflectionProbe {
   float blend_distance = 1;   // world units inside the box over which it fades out
   float intensity = 1;
   int resolution = 64;        // texels a side of each face (a power of two)
+  bool operator==(const SceneReflectionProbe&) const = default;
 };
 
 enum class FogMode { off, linear, exp, exp2 };
@@ -148,6 +156,7 @@ struct SceneFog {
   FogMode mode = FogMode::off;
   Vec4 color{0.5f, 0.5f, 0.5f, 1};  // sRGB-authored
   float start = 0, end = 300, density = 0.01f;
+  bool operator==(const SceneFog&) const = default;
 };
 
 enum class Tonemap { none, reinhard, aces };
@@ -159,6 +168,7 @@ struct SceneProperty {
   std::vector<float> numbers;       // a number or a list of numbers
   std::optional<SceneTexture> texture;
   bool if_declared = false;         // from a glTF material: skipped when the shader has no such property
+  bool operator==(const SceneProperty&) const = default;
 };
 
 struct SceneMaterial {
@@ -172,6 +182,7 @@ struct SceneMaterial {
   // same mesh, pass variant, light and material values drawn as one
   // instanced draw (docs/rendering.md, "GPU instancing").
   bool instancing = false;
+  bool operator==(const SceneMaterial&) const = default;
 };
 
 struct SceneObject {
@@ -184,6 +195,7 @@ struct SceneObject {
   std::optional<int> gltf_material;
   Transform transform;
   SceneMaterial material;
+  bool operator==(const SceneObject&) const = default;
 };
 
 // One step of the image-effect chain, as Unity's Graphics.Blit(source,
@@ -192,6 +204,7 @@ struct ScenePostEffect {
   std::string json_path;            // "post[0]"
   SceneMaterial material;
   int pass = 0;                     // into the passes of the shader's SubShader
+  bool operator==(const ScenePostEffect&) const = default;
 };
 
 struct Scene {
@@ -213,6 +226,7 @@ struct Scene {
   float shadow_distance = 50;       // directional shadows cover what lies this close to the camera
   int shadow_cascades = 1;          // 1, 2 or 4: a directional light's map split along the view (Unity's splits)
   std::vector<ScenePostEffect> post;  // image effects, in order, before tone mapping
+  bool operator==(const Scene&) const = default;
 };
 
 // Parses `text`; `path` names the file in messages and anchors relative paths.
