@@ -3,6 +3,7 @@
 // value; whatever was created before a failure is destroyed by ~Context.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "facet/runtime/vulkan_context.h"
@@ -143,19 +144,58 @@ VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& option
   return context;
 }
 
+VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted) {
+  if (!adopted.instance || !adopted.physical_device || !adopted.device || !adopted.queue) {
+    return vk_failure(VkErrorCode::object_failed, "adopt_context needs the instance, physical device, device and queue");
+  }
+  std::unique_ptr<Context> context(new Context);
+  context->owns_device_ = false;
+  context->instance_ = adopted.instance;
+  context->physical_ = adopted.physical_device;
+  context->device_ = adopted.device;
+  context->queue_ = adopted.queue;
+  context->queue_family_ = adopted.queue_family;
+  uint32_t index = 0;
+  if (VkResultOf<std::vector<VkPhysicalDevice>> handles = physical_devices(adopted.instance)) {
+    auto it = std::find(handles->begin(), handles->end(), adopted.physical_device);
+    if (it != handles->end()) index = uint32_t(it - handles->begin());
+  }
+  context->info_ = query_device(adopted.physical_device, index);
+  context->info_.maintenance4 = adopted.maintenance4;
+  context->info_.pipeline_executable_info = false;
+  uint32_t family_count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(adopted.physical_device, &family_count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(family_count);
+  vkGetPhysicalDeviceQueueFamilyProperties(adopted.physical_device, &family_count, families.data());
+  if (adopted.queue_family >= family_count || !(families[adopted.queue_family].queueFlags & VK_QUEUE_GRAPHICS_BIT)) {
+    return vk_failure(VkErrorCode::device_failed,
+                      fmt::format("queue family {} of {} has no graphics: facet draws on it", adopted.queue_family,
+                                  context->info_.name));
+  }
+  context->info_.timestamp_valid_bits = families[adopted.queue_family].timestampValidBits;
+  context->features_ = adopted.enabled_features;
+  context->shader_float16_ = adopted.shader_float16;
+  if (adopted.record_messages) {
+    context->validation_ = true;
+    FACET_TRY(ContextBuilder::create_messenger(*context, ContextBuilder::messenger_info(*context)));
+  }
+  FACET_TRY(ContextBuilder::create_pools(*context));
+  return context;
+}
+
 Context::~Context() {
   if (device_) {
     vkDeviceWaitIdle(device_);
     if (timestamp_pool_) vkDestroyQueryPool(device_, timestamp_pool_, nullptr);
     if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
+    if (owns_device_) vkDestroyDevice(device_, nullptr);
   }
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
     if (destroy) destroy(instance_, messenger_, nullptr);
   }
-  if (instance_) vkDestroyInstance(instance_, nullptr);
+  if (instance_ && owns_device_) vkDestroyInstance(instance_, nullptr);
 }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Context::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,

@@ -71,8 +71,28 @@ struct ValidationMessage {
   std::string text;
 };
 
-// Owns every handle it holds and destroys them in reverse order. Not movable:
-// the messenger keeps a pointer to it (create_context returns it on the heap).
+// An engine's own Vulkan objects for adopt_context: facet draws with them
+// and never destroys them.
+struct AdoptedDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;  // of queue_family, which must have graphics
+  uint32_t queue_family = 0;
+  // What the engine enabled on `device`: facet draws what needs a feature
+  // (geometryShader, tessellationShader, depthClamp, independentBlend for
+  // the G-buffer) only when it is on, as with its own devices.
+  VkPhysicalDeviceFeatures enabled_features{};
+  bool shader_float16 = false;  // shaderFloat16 enabled
+  bool maintenance4 = false;    // VK_KHR_maintenance4 and its feature enabled
+  // Record warnings and errors in Context::messages() through a messenger
+  // of facet's own: the instance must have VK_EXT_debug_utils enabled.
+  bool record_messages = false;
+};
+
+// Owns every handle it holds and destroys them in reverse order (an adopted
+// instance and device excepted: adopt_context). Not movable: the messenger
+// keeps a pointer to it (create_context returns it on the heap).
 class Context {
  public:
   ~Context();
@@ -110,6 +130,16 @@ class Context {
  private:
   Context() = default;
   friend VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& options);
+
+// A context over an engine's instance, device and queue, with a command pool
+// and timestamp queries of its own (destroyed with it; the engine's objects
+// are not). Everything facet creates on it must go before the engine
+// destroys its device: destroy the Context (and the Renderers using it)
+// first. Queue submissions are facet's own: the engine must not use the
+// queue from another thread while a render runs. Errors: object_failed,
+// device_failed (no graphics on the queue family).
+VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
+  friend VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
   friend struct ContextBuilder;
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
@@ -125,6 +155,7 @@ class Context {
   VkQueryPool timestamp_pool_ = VK_NULL_HANDLE;
   DeviceInfo info_;
   bool validation_ = false;
+  bool owns_device_ = true;  // false: adopted, the engine destroys the instance and device
   bool pipeline_statistics_ = false;
   bool shader_float16_ = false;
   VkPhysicalDeviceFeatures features_{};
@@ -135,5 +166,14 @@ class Context {
 // Errors: loader_missing, layer_missing, extension_missing, instance_failed,
 // no_device (with the reasons), device_failed, object_failed.
 VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& options);
+
+// A context over an engine's instance, device and queue, with a command pool
+// and timestamp queries of its own (destroyed with it; the engine's objects
+// are not). Everything facet creates on it must go before the engine
+// destroys its device: destroy the Context (and the Renderers using it)
+// first. Queue submissions are facet's own: the engine must not use the
+// queue from another thread while a render runs. Errors: object_failed,
+// device_failed (no graphics on the queue family).
+VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
 
 }  // namespace facet::runtime
