@@ -104,6 +104,11 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   if (options.capture && !scene.post.empty()) {
     return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
   }
+  if (options.target) {
+    if (std::string problem = target_problem(s.context, *options.target); !problem.empty()) {
+      return unexpected(error(problem));
+    }
+  }
   ShaderLibrary& library = *s.store->library;
   library.set_compiler(s.options.shader_compiler);
   library.set_strict_variants(s.options.strict_variants);
@@ -159,7 +164,8 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     const bool capturing = f == 0 && frame.capture;
     VkResultOf<void> submitted = s.submitter.submit(
         [&](VkCommandBuffer c) {
-          if (Result<void, RenderError> recorded = record_frame(frame, c, capturing, out.stats); !recorded) {
+          const FrameOutput output{options.target ? &*options.target : nullptr, options.read_back};
+          if (Result<void, RenderError> recorded = record_frame(frame, c, capturing, output, out.stats); !recorded) {
             failed = recorded.error();
           }
         },
@@ -177,7 +183,12 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     if (options.after_frame) options.after_frame(f);
   }
   if (!out.stats.frame_gpu_ms.empty()) out.stats.gpu_ms = median(out.stats.frame_gpu_ms);
-  finish_image(out, static_cast<const std::byte*>(frame.readback->data()), frame.scene);
+  if (options.read_back) {
+    finish_image(out, static_cast<const std::byte*>(frame.readback->data()), frame.scene);
+  } else {
+    out.hdr.clear();
+    out.ldr.clear();
+  }
   collect_records(frame, out, options.records, path != FramePath::repeated);
   out.stats.instanced_away = frame.instanced_away;
   out.stats.frame_path = path;

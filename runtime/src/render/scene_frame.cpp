@@ -165,7 +165,51 @@ std::string pass_blocker(const SceneFrame& frame) {
   return "";
 }
 
+// The engine image's layout change around the blit from `result` (in
+// TRANSFER_SRC_OPTIMAL) into it.
+void copy_to_target(VkCommandBuffer commands, const Image& result, uint32_t width, uint32_t height,
+                    const ImageTarget& target) {
+  VkImageMemoryBarrier to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  to_dst.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  to_dst.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  to_dst.oldLayout = target.layout;
+  to_dst.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  to_dst.srcQueueFamilyIndex = to_dst.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  to_dst.image = target.image;
+  to_dst.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &to_dst);
+  VkImageBlit blit{};
+  blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(width), int32_t(height), 1};
+  blit.dstOffsets[1] = {int32_t(target.width), int32_t(target.height), 1};
+  const bool scaled = width != target.width || height != target.height;
+  vkCmdBlitImage(commands, result.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, scaled ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
+  VkImageMemoryBarrier to_final = to_dst;
+  to_final.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  to_final.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  to_final.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  to_final.newLayout = target.final_layout;
+  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &to_final);
+}
+
 }  // namespace
+
+std::string target_problem(const Context& context, const ImageTarget& target) {
+  if (!target.image) return "the target has no image";
+  if (target.width == 0 || target.height == 0) return "the target's size is 0";
+  if (target.final_layout == VK_IMAGE_LAYOUT_UNDEFINED || target.final_layout == VK_IMAGE_LAYOUT_PREINITIALIZED) {
+    return "the target's final layout must be one an image can be left in";
+  }
+  VkFormatProperties p{};
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), target.format, &p);
+  if (!(p.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT)) {
+    return fmt::format("the device cannot blit into the target's format (VkFormat {})", int(target.format));
+  }
+  return "";
+}
 
 SceneFrame::~SceneFrame() {
   vkDeviceWaitIdle(context.device());
@@ -384,7 +428,8 @@ void refresh_frame_values(SceneFrame& frame, const Scene& scene) {
   frame.frame_values.assign(per_frame_uniforms(frame.scene, frame.camera, frame.width, frame.height));
 }
 
-Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing, RenderStats& stats) {
+Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
+                                       const FrameOutput& output, RenderStats& stats) {
   // The frame's parts under the names the recording uses.
   std::vector<ObjectState>& objects = frame.objects;
   DrawListResult* list = &frame.list;
@@ -575,15 +620,19 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
   }
   if (post) transition(commands, *result, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   if (queries) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
-  vkCmdCopyImageToBuffer(commands, result->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->handle(), 1, &region);
-  VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr, 0,
-                       nullptr);
+  if (output.target) copy_to_target(commands, *result, uint32_t(frame.width), uint32_t(frame.height), *output.target);
+  if (output.read_back) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {uint32_t(frame.width), uint32_t(frame.height), 1};
+    vkCmdCopyImageToBuffer(commands, result->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->handle(), 1,
+                           &region);
+    VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr,
+                         0, nullptr);
+  }
   if (failed) return unexpected(*failed);
   return {};
 }

@@ -99,9 +99,19 @@ Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& sc
 // only difference from frame.scene is its time).
 void refresh_frame_values(SceneFrame& frame, const Scene& scene);
 
-// Records one frame: shadow maps, the scene, image effects, the readback.
-// `capturing`: fill the capture (the first frame after preparing).
-Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing, RenderStats& stats);
+// Where a recorded frame goes: into an engine's image, to the host, or both.
+struct FrameOutput {
+  const ImageTarget* target = nullptr;
+  bool read_back = true;
+};
+
+// Records one frame: shadow maps, the scene, image effects, the copies of
+// `output`. `capturing`: fill the capture (the first frame after preparing).
+Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
+                                       const FrameOutput& output, RenderStats& stats);
+
+// Why `target` cannot receive frames on `context` ("" when it can).
+std::string target_problem(const Context& context, const ImageTarget& target);
 
 // The draw counts of the frame into out.stats; with `records` its draw
 // records appended to out.draws, with `compiled` the variants its lists

@@ -2,8 +2,12 @@
 // the same pixels as on a device of its own, and leaves them to the engine.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <vector>
 
+#include <glm/gtc/packing.hpp>
+
+#include "facet/runtime/image.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/vulkan_context.h"
@@ -133,6 +137,63 @@ TEST_F(AdoptedDeviceTest, MissingHandlesAndAQueueWithoutGraphicsAreErrors) {
   auto refused = adopt_context(wrong);
   ASSERT_FALSE(refused);
   EXPECT_NE(describe(refused.error()).find("no graphics"), std::string::npos) << describe(refused.error());
+}
+
+TEST_F(AdoptedDeviceTest, EachFrameIsCopiedIntoTheEnginesImage) {
+  Scene scene = example("phong_lights.json");
+  RenderedFrame read_back = *render_scene(context(), scene, test_support::with_compiler({}));
+  auto target = create_image(context(), {.width = uint32_t(scene.width), .height = uint32_t(scene.height),
+                                         .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                         .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                                  VK_IMAGE_USAGE_SAMPLED_BIT});
+  ASSERT_TRUE(target) << describe(target.error());
+  auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
+  ASSERT_TRUE(renderer);
+  const ImageTarget into{.image = target->handle(), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                         .width = uint32_t(scene.width), .height = uint32_t(scene.height),
+                         .final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  RenderedFrame frame;
+  for (int f = 0; f < 2; ++f) {
+    ASSERT_TRUE((*renderer)->render(scene, frame, {.target = into, .read_back = false}));
+    EXPECT_TRUE(frame.hdr.empty());
+    EXPECT_TRUE(frame.ldr.empty());
+  }
+  auto texels = read_image(context(), *target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  ASSERT_TRUE(texels) << describe(texels.error());
+  ASSERT_EQ(texels->size(), read_back.hdr.size() * 2);
+  std::vector<float> copied(read_back.hdr.size());
+  for (size_t i = 0; i < copied.size(); ++i) {
+    uint16_t h;
+    std::memcpy(&h, texels->data() + 2 * i, 2);
+    copied[i] = glm::unpackHalf1x16(h);
+  }
+  EXPECT_EQ(copied, read_back.hdr) << "the scene's exposure is 1: the target holds RenderedFrame::hdr";
+}
+
+TEST_F(AdoptedDeviceTest, ATargetOfAnotherSizeIsScaledAndABadTargetIsAnError) {
+  Scene scene = example("unlit.json");
+  auto target = create_image(context(), {.width = 20, .height = 10, .format = VK_FORMAT_R8G8B8A8_UNORM,
+                                         .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                                  VK_IMAGE_USAGE_SAMPLED_BIT});
+  ASSERT_TRUE(target);
+  auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
+  ASSERT_TRUE(renderer);
+  RenderedFrame frame;
+  ImageTarget into{.image = target->handle(), .format = VK_FORMAT_R8G8B8A8_UNORM, .width = 20, .height = 10,
+                   .final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  ASSERT_TRUE((*renderer)->render(scene, frame, {.target = into}));
+  EXPECT_FALSE(frame.hdr.empty()) << "read back as well";
+  auto texels = read_image(context(), *target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  ASSERT_TRUE(texels);
+  EXPECT_TRUE(std::any_of(texels->begin(), texels->end(), [](std::byte b) { return b != std::byte{0}; }));
+  into.format = VK_FORMAT_BC1_RGB_UNORM_BLOCK;  // compressed: never a blit destination
+  auto refused = (*renderer)->render(scene, frame, {.target = into});
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("cannot blit"), std::string::npos) << refused.error().message;
+  into.image = VK_NULL_HANDLE;
+  refused = (*renderer)->render(scene, frame, {.target = into});
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("no image"), std::string::npos);
 }
 
 }  // namespace

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 #include "facet/result.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/shader_compiler.h"
@@ -165,6 +167,22 @@ struct RendererOptions {
   std::shared_ptr<ShaderStore> shaders;
 };
 
+// An engine's image a Renderer copies each frame into (FrameOptions::target):
+// the scene's linear colour after the image effects, before exposure and
+// tone mapping (RenderedFrame::hdr without the exposure), scaled with a
+// linear filter when the sizes differ. The image needs
+// VK_IMAGE_USAGE_TRANSFER_DST_BIT, optimal tiling, one layer and mip 0, and
+// a format the device can blit to (RGBA16F, RGBA8, ...).
+struct ImageTarget {
+  VkImage image = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  uint32_t width = 0, height = 0;
+  // The layout before the frame (UNDEFINED: its contents may be dropped)
+  // and the one it is left in, with the writes visible to every later stage.
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImageLayout final_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+};
+
 // What one Renderer::render draws and returns.
 struct FrameOptions {
   int width = 0, height = 0;  // 0: the scene's size
@@ -174,6 +192,10 @@ struct FrameOptions {
   // Fill RenderedFrame::draws and compiled (--explain, tests); an engine's
   // loop leaves them out and keeps the counts in stats.
   bool records = true;
+  std::optional<ImageTarget> target;
+  // Copy the frame to the host and tone-map it into RenderedFrame::hdr and
+  // ldr; off (an engine drawing into `target`): they are left empty.
+  bool read_back = true;
 };
 
 // A renderer that keeps what it made from one render to the next, for an
