@@ -102,6 +102,7 @@ Result<Material, MaterialError> make_material(const ir::Shader& shader, const Sc
     if (std::find(m.keywords.begin(), m.keywords.end(), k) == m.keywords.end()) m.keywords.push_back(k);
   }
   for (const auto& [name, v] : m.numbers) m.uniforms.set_vector(name, v);
+  for (const auto& [name, floats] : scene.uniforms) m.uniforms.set_elements(name, floats);
   for (const auto& [name, t] : m.textures) {
     m.uniforms.set_vector(name + "_ST", t.scale[0], t.scale[1], t.offset[0], t.offset[1]);
     m.uniforms.set_vector(name + "_HDR", 1, 1, 0, 0);  // DecodeHDR: linear data, no RGBM

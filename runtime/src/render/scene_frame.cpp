@@ -23,23 +23,53 @@ struct Loader {
   ShaderLibrary& library;
   Resources& resources;
   std::map<std::string, std::unique_ptr<GpuMesh>>& meshes;
+  std::vector<std::shared_ptr<const MeshData>>& mesh_sources;
   uint64_t& meshes_loaded;
 
-  Result<GpuMesh*, RenderError> mesh(const SceneObject& object) {
-    std::string key = object.gltf_material ? fmt::format("{}#{}", object.mesh, *object.gltf_material) : object.mesh;
-    if (auto it = meshes.find(key); it != meshes.end()) return it->second.get();
-    std::optional<MeshData> data;
-    MeshError mesh_error;
-    if (object.builtin_mesh) {
-      data = builtin_mesh(object.mesh);
-    } else if (is_gltf_path(object.mesh)) {
-      if (std::optional<GltfModel> model = load_gltf(object.mesh, mesh_error)) {
-        data = merge_gltf_parts(*model, object.gltf_material);
+  // An engine's MeshData: every index must name a vertex.
+  Result<const MeshData*, RenderError> engine_mesh(const SceneObject& object) {
+    const MeshData& data = *object.mesh_data;
+    auto bad = [&](const std::string& why) {
+      return unexpected(error(fmt::format("{}: {}.mesh_data: {}", scene.path, object.json_path, why)));
+    };
+    if (data.vertices.empty() || data.indices.empty()) return bad("no vertices or no indices");
+    if (data.indices.size() % 3 != 0) return bad(fmt::format("{} indices: not whole triangles", data.indices.size()));
+    for (size_t i = 0; i < data.indices.size(); ++i) {
+      if (data.indices[i] >= data.vertices.size()) {
+        return bad(fmt::format("index {} is {}, but there are {} vertices", i, data.indices[i], data.vertices.size()));
       }
-    } else {
-      data = load_obj(object.mesh, mesh_error);
     }
-    if (!data) return unexpected(error(fmt::format("{}: {}.mesh: {}", scene.path, object.json_path, mesh_error.message)));
+    mesh_sources.push_back(object.mesh_data);
+    return &data;
+  }
+
+  Result<GpuMesh*, RenderError> mesh(const SceneObject& object) {
+    std::string key = object.mesh_data ? fmt::format("memory:{}", static_cast<const void*>(object.mesh_data.get()))
+                      : object.gltf_material ? fmt::format("{}#{}", object.mesh, *object.gltf_material)
+                                             : object.mesh;
+    if (auto it = meshes.find(key); it != meshes.end()) return it->second.get();
+    std::optional<MeshData> loaded;
+    const MeshData* data = nullptr;
+    if (object.mesh_data) {
+      Result<const MeshData*, RenderError> given = engine_mesh(object);
+      if (!given) return unexpected(given.error());
+      data = *given;
+    } else {
+      MeshError mesh_error;
+      if (object.builtin_mesh) {
+        loaded = builtin_mesh(object.mesh);
+      } else if (is_gltf_path(object.mesh)) {
+        if (std::optional<GltfModel> model = load_gltf(object.mesh, mesh_error)) {
+          loaded = merge_gltf_parts(*model, object.gltf_material);
+        }
+      } else {
+        loaded = load_obj(object.mesh, mesh_error);
+      }
+      if (!loaded) {
+        return unexpected(error(fmt::format("{}: {}.mesh: {}", scene.path, object.json_path, mesh_error.message)));
+      }
+      data = &*loaded;
+    }
     Result<GpuMesh, RenderError> gpu = upload_mesh(context, *data);
     if (!gpu) return unexpected(gpu.error());
     ++meshes_loaded;
@@ -91,7 +121,9 @@ struct Loader {
 
 // The objects of `frame.scene` with their materials, meshes and probes.
 Result<void, RenderError> load_objects(SceneFrame& frame) {
-  Loader loader{frame.context, frame.scene, *frame.library, frame.resources, frame.meshes, frame.meshes_loaded};
+  Loader loader{frame.context,    frame.scene,        *frame.library,
+                frame.resources,  frame.meshes,       frame.mesh_sources,
+                frame.meshes_loaded};
   frame.objects.clear();
   frame.objects.reserve(frame.scene.objects.size());
   for (size_t i = 0; i < frame.scene.objects.size(); ++i) {

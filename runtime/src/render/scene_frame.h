@@ -44,7 +44,8 @@ struct SceneFrame {
   int width = 0, height = 0;
   ShaderLibrary* library = nullptr;
   Resources resources;
-  std::map<std::string, std::unique_ptr<GpuMesh>> meshes;  // by mesh name (and glTF material)
+  std::map<std::string, std::unique_ptr<GpuMesh>> meshes;  // by mesh name (and glTF material) or MeshData address
+  std::vector<std::shared_ptr<const MeshData>> mesh_sources;  // the MeshData `meshes` hold: their addresses stay theirs
   CameraMatrices camera;
   std::optional<EnvironmentLighting> environment;
   UniformValues frame_values;  // in place: kept uniform blocks point at it

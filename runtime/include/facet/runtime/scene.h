@@ -9,11 +9,14 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/result.h"
+#include "facet/runtime/mesh.h"
 
 namespace facet::runtime {
 
@@ -175,6 +178,11 @@ struct SceneMaterial {
   std::string shader;               // resolved path of the .shader file
   std::string json_path;            // "objects[0].material"
   std::vector<SceneProperty> properties;
+  // Values of shader uniforms no property declares (Unity's
+  // Material.SetMatrix, or SetFloat of an undeclared name), written to the
+  // members of that name: a matrix as 16 floats in column-major order, a
+  // vector as up to 4, an array element after element.
+  std::map<std::string, std::vector<float>> uniforms;
   std::vector<std::string> keywords;
   std::optional<int> queue;         // render queue override
   // Unity's Material.enableInstancing: INSTANCING_ON for the passes that
@@ -195,6 +203,10 @@ struct SceneObject {
   std::optional<int> gltf_material;
   Transform transform;
   SceneMaterial material;
+  // An engine's own geometry, drawn instead of `mesh` (which then only names
+  // it in messages): uploaded once per MeshData object, kept while a
+  // Renderer keeps its frame. Its indices are checked against its vertices.
+  std::shared_ptr<const MeshData> mesh_data;
   bool operator==(const SceneObject&) const = default;
 };
 
