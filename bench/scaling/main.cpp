@@ -18,8 +18,12 @@
 //     left out); and malloc's bytes in use, grown likewise, over the objects.
 // Each count is measured twice: the objects drawn one by one, and with GPU
 // instancing (the material's "instancing": up to 128 objects a draw, each
-// with its own colour either way); the last table compares the two per
-// object.
+// with its own colour either way); a table compares the two per object.
+// The last table is an engine's loop through one Renderer (docs/rendering.md,
+// "Frames kept between renders"), objects drawn one by one: the host time of
+// a whole render call without the wait for the GPU, per draw, when the
+// scene is the same as the last frame's (repeated) and when every object's
+// colour changed (updated), and the GPU objects those frames created.
 //
 //   facet_scaling_bench [--device SEL] [--counts 10,100,1000,10000,100000]
 //                       [--frames N] [--shader PATH] [--validation]
@@ -27,6 +31,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <malloc.h>
@@ -175,6 +180,67 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
   return row;
 }
 
+struct RendererRow {
+  int objects = 0;
+  double repeated_us = 0, updated_us = 0;  // per draw
+  uint64_t created = 0;                    // GPU objects made by the timed frames
+};
+
+// Every object's colour, moved along by `frame`.
+void recolour(runtime::Scene& scene, int frame) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const float phase = float(i) * 0.07f + float(frame) * 0.3f;
+    scene.objects[i].material.properties[0].numbers = {0.5f + 0.5f * std::sin(phase), 0.5f + 0.5f * std::cos(phase),
+                                                       0.5f, 1};
+  }
+}
+
+Result<RendererRow, std::string> measure_renderer(runtime::Context& context, const Options& o, int count) {
+  runtime::Scene scene = grid_scene(o.shader, count, false);
+  auto renderer = runtime::Renderer::create(context, {.shader_compiler = runtime::make_shader_compiler()});
+  if (!renderer) return unexpected(renderer.error().message);
+  runtime::RenderedFrame frame;
+  const runtime::FrameOptions loop{.records = false, .read_back = false};
+  // The host's part of one render call: the call less its wait for the GPU.
+  auto host_ms = [&]() -> Result<double, std::string> {
+    auto start = std::chrono::steady_clock::now();
+    if (auto r = (*renderer)->render(scene, frame, loop); !r) return unexpected(r.error().message);
+    double call = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return call - (frame.stats.frame_ms[0] - frame.stats.frame_cpu_ms[0]);
+  };
+  auto created = [&] {
+    const runtime::RenderStats& s = frame.stats;
+    return s.pipelines + s.meshes_loaded + s.textures_loaded + s.descriptor_pools_created + s.uniform_buffers_created;
+  };
+  // Prepared, then updated once: the frames after make nothing new.
+  for (int warm = 0; warm < 2; ++warm) {
+    recolour(scene, warm);
+    FACET_TRY(host_ms());
+  }
+  RendererRow row{.objects = count};
+  std::vector<double> repeated, updated;
+  for (int f = 0; f < o.frames; ++f) {
+    auto ms = host_ms();
+    if (!ms) return unexpected(ms.error());
+    if (frame.stats.frame_path != runtime::FramePath::repeated) return unexpected(std::string("not a repeated frame"));
+    repeated.push_back(*ms);
+    row.created += created();
+  }
+  for (int f = 0; f < o.frames; ++f) {
+    recolour(scene, f + 2);
+    auto ms = host_ms();
+    if (!ms) return unexpected(ms.error());
+    if (frame.stats.frame_path != runtime::FramePath::updated) {
+      return unexpected("not an updated frame: " + frame.stats.prepared_because);
+    }
+    updated.push_back(*ms);
+    row.created += created();
+  }
+  row.repeated_us = median(repeated) * 1000 / double(frame.stats.draws);
+  row.updated_us = median(updated) * 1000 / double(frame.stats.draws);
+  return row;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -229,6 +295,20 @@ int main(int argc, char** argv) {
     double separate = per_object(rows[0][i]), instanced = per_object(rows[1][i]);
     std::cout << fmt::format("{:>8} {:>12.3f} {:>12.3f} {:>7.1f}x\n", rows[0][i].objects, separate, instanced,
                              separate / instanced);
+  }
+  std::cout << "\nan engine's loop through one Renderer, separate draws: host µs per draw of a whole render call "
+               "(no wait, no read-back)\n";
+  std::cout << fmt::format("{:>8} {:>14} {:>14} {:>22}\n", "objects", "repeated µs", "updated µs",
+                           "GPU objects created");
+  for (int count : o.counts) {
+    auto row = measure_renderer(**context, o, count);
+    if (!row) {
+      std::cerr << fmt::format("{} objects, Renderer: {}\n", count, row.error());
+      return 1;
+    }
+    std::cout << fmt::format("{:>8} {:>14.3f} {:>14.3f} {:>22}\n", row->objects, row->repeated_us, row->updated_us,
+                             row->created)
+              << std::flush;
   }
   if (o.validation && !(*context)->messages().empty()) {
     std::cerr << "the validation layer reported:\n" << (*context)->messages_text();
