@@ -1,5 +1,7 @@
 #include "facet/runtime/material.h"
 
+#include "facet/reference/color.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -64,8 +66,8 @@ SceneTexture default_texture(const ir::Property& p) {
 
 }  // namespace
 
-double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-double linear_to_srgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
+double srgb_to_linear(double c) { return reference::FacetSRGBToLinear(c); }
+double linear_to_srgb(double c) { return reference::FacetLinearToSRGB(c); }
 
 Result<Material, MaterialError> make_material(const ir::Shader& shader, const SceneMaterial& scene,
                                               const std::string& scene_path) {

@@ -10,6 +10,8 @@
 #include <glm/gtc/packing.hpp>
 
 #include "facet/runtime/vulkan_context.h"
+#include "facet/reference/color.h"
+#include "facet/reference/tonemap.h"
 #include "render/scene_frame.h"
 #include "render/submission.h"
 
@@ -26,13 +28,11 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-glm::vec3 tonemap(glm::vec3 c, Tonemap mode) {
-  c = glm::max(c, glm::vec3(0));
-  if (mode == Tonemap::reinhard) return c / (1.0f + c);
-  if (mode == Tonemap::aces) {  // Narkowicz's fit of the ACES filmic curve
-    return glm::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f);
-  }
-  return glm::min(c, glm::vec3(1));
+// The scene's tone curve: the stdlib's (FacetTonemap.hlsl) through its CPU twin.
+glm::dvec3 tonemap(const glm::dvec3& c, Tonemap mode) {
+  if (mode == Tonemap::reinhard) return reference::FacetTonemapReinhard(c);
+  if (mode == Tonemap::aces) return reference::FacetTonemapACESNarkowicz(c);  // Narkowicz's fit of the ACES filmic curve
+  return reference::saturate(c);
 }
 
 void finish_image(RenderedFrame& frame, const std::byte* halves, const Scene& scene) {
@@ -46,8 +46,8 @@ void finish_image(RenderedFrame& frame, const std::byte* halves, const Scene& sc
     frame.hdr[i] = glm::unpackHalf1x16(h) * (i % 4 == 3 ? 1.0f : exposure);
   }
   for (size_t p = 0; p < n; ++p) {
-    glm::vec3 c = tonemap({frame.hdr[4 * p], frame.hdr[4 * p + 1], frame.hdr[4 * p + 2]}, scene.tonemap);
-    for (int k = 0; k < 3; ++k) frame.ldr[4 * p + k] = uint8_t(std::lround(linear_to_srgb(c[k]) * 255.0));
+    glm::dvec3 c = tonemap({frame.hdr[4 * p], frame.hdr[4 * p + 1], frame.hdr[4 * p + 2]}, scene.tonemap);
+    for (int k = 0; k < 3; ++k) frame.ldr[4 * p + k] = uint8_t(std::lround(reference::FacetLinearToSRGB(c[k]) * 255.0));
     frame.ldr[4 * p + 3] = 255;
   }
 }
@@ -161,7 +161,8 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     if (f > 0 || path == FramePath::repeated) refresh_frame_values(frame, scene);
     Clock::time_point submit_returned = frame_start;
     std::optional<RenderError> failed;
-    const bool capturing = f == 0 && frame.capture;
+    // Only the render that asked for it (and so prepared the frame) captures.
+    const bool capturing = f == 0 && options.capture != nullptr;
     VkResultOf<void> submitted = s.submitter.submit(
         [&](VkCommandBuffer c) {
           const FrameOutput output{options.target ? &*options.target : nullptr, options.read_back};

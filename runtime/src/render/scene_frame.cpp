@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 
 #include "facet/runtime/gltf.h"
 #include "facet/runtime/vulkan_context.h"
@@ -140,6 +141,20 @@ Result<void, RenderError> load_objects(SceneFrame& frame) {
     frame.objects.push_back(std::move(*o));
   }
   return {};
+}
+
+// An engine's meshes (SceneObject::mesh_data) that no object draws any
+// more: freed, so that a loop giving new geometry every frame does not
+// accumulate the old. The GPU is done with them (each frame is waited for).
+void forget_unused_engine_meshes(SceneFrame& frame) {
+  std::set<const GpuMesh*> drawn;
+  for (const ObjectState& o : frame.objects) drawn.insert(o.mesh);
+  std::erase_if(frame.meshes, [&](const auto& entry) {
+    return entry.first.starts_with("memory:") && !drawn.contains(entry.second.get());
+  });
+  std::set<const MeshData*> used;
+  for (const SceneObject& o : frame.scene.objects) used.insert(o.mesh_data.get());
+  std::erase_if(frame.mesh_sources, [&](const std::shared_ptr<const MeshData>& m) { return !used.contains(m.get()); });
 }
 
 // The lights, their shadow views, and the draw list of the loaded objects.
@@ -446,6 +461,7 @@ Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& sc
   // Replaced, not assigned: restart() dropped every pointer into the old values.
   frame.frame_values = frame_uniforms(frame.scene, frame.camera, frame.width, frame.height, frame.environment->ambient);
   FACET_TRY(load_objects(frame));
+  forget_unused_engine_meshes(frame);
   FACET_TRY(build_lists(frame));
   if (std::string blocker = pass_blocker(frame); !blocker.empty()) return blocker;
   Result<std::vector<VkPipeline>, RenderError> made =

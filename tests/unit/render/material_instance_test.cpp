@@ -142,6 +142,18 @@ TEST_F(MaterialInstanceTest, AnEnginesMeshDrawsAsTheSameMeshFromAName) {
   EXPECT_EQ(frame.stats.frame_path, FramePath::updated) << frame.stats.prepared_because;
   EXPECT_EQ(frame.stats.meshes_loaded, 1u);
   EXPECT_EQ(frame.hdr, fresh(named).hdr);
+  // A mesh no object draws any more is let go (a loop giving new geometry
+  // each frame does not pile up the old).
+  EXPECT_GT(cube.use_count(), 1);
+  given.objects[0].mesh_data = sphere;
+  ASSERT_TRUE(renderer->render(given, frame));
+  EXPECT_EQ(frame.stats.frame_path, FramePath::updated);
+  EXPECT_EQ(frame.stats.meshes_loaded, 0u);
+  given.objects.clear();
+  given.objects.push_back(named.objects[1]);
+  ASSERT_TRUE(renderer->render(given, frame));
+  EXPECT_EQ(cube.use_count(), 1) << "only the test holds the cube";
+  EXPECT_EQ(sphere.use_count(), 1) << "and the sphere";
 }
 
 TEST_F(MaterialInstanceTest, AnEnginesMeshWithBadIndicesIsAnError) {
