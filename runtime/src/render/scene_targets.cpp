@@ -1,5 +1,7 @@
 #include "render/scene_targets.h"
 
+#include "render/targets.h"
+
 #include "facet/runtime/vk_error.h"
 #include "facet/runtime/vulkan_context.h"
 
@@ -95,18 +97,10 @@ Result<void, RenderError> make_scene_targets(const Context& context, uint32_t wi
   Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), out.depth_format, last_part);
   if (!pass) return unexpected(pass.error());
   out.render_pass = *pass;
-  VkImageView views[2] = {out.color.view(), out.depth.view()};
-  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  fb.renderPass = out.render_pass;
-  fb.attachmentCount = 2;
-  fb.pAttachments = views;
-  fb.width = width;
-  fb.height = height;
-  fb.layers = 1;
-  if (VkResult r = vkCreateFramebuffer(context.device(), &fb, nullptr, &out.framebuffer); r != VK_SUCCESS) {
-    out.framebuffer = VK_NULL_HANDLE;
-    return unexpected(error("cannot create the framebuffer: " + vk_result_name(r)));
-  }
+  Result<VkFramebuffer, RenderError> framebuffer =
+      make_framebuffer(context.device(), out.render_pass, {out.color.view(), out.depth.view()}, width, height);
+  if (!framebuffer) return unexpected(framebuffer.error());
+  out.framebuffer = *framebuffer;
   return {};
 }
 

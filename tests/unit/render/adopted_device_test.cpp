@@ -85,19 +85,12 @@ struct EngineDevice {
   }
 };
 
-class AdoptedDeviceTest : public test_support::LavapipeTest {
- protected:
-  static Scene example(const std::string& name) {
-    auto scene = load_scene(std::string(FACET_SOURCE_DIR) + "/examples/scenes/" + name);
-    EXPECT_TRUE(scene) << scene.error().message;
-    return scene ? *scene : Scene{};
-  }
-};
+class AdoptedDeviceTest : public test_support::LavapipeTest {};
 
 TEST_F(AdoptedDeviceTest, DrawsTheSamePixelsOnTheEnginesDeviceAndLeavesItToTheEngine) {
   EngineDevice engine;
   ASSERT_TRUE(engine.queue) << "no lavapipe device with a graphics queue";
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   RenderedFrame own = *render_scene(context(), scene, test_support::with_compiler({}));
   {
     auto adopted = adopt_context(engine.adopted());
@@ -140,7 +133,7 @@ TEST_F(AdoptedDeviceTest, MissingHandlesAndAQueueWithoutGraphicsAreErrors) {
 }
 
 TEST_F(AdoptedDeviceTest, EachFrameIsCopiedIntoTheEnginesImage) {
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   RenderedFrame read_back = *render_scene(context(), scene, test_support::with_compiler({}));
   auto target = create_image(context(), {.width = uint32_t(scene.width), .height = uint32_t(scene.height),
                                          .format = VK_FORMAT_R16G16B16A16_SFLOAT,
@@ -171,7 +164,7 @@ TEST_F(AdoptedDeviceTest, EachFrameIsCopiedIntoTheEnginesImage) {
 }
 
 TEST_F(AdoptedDeviceTest, ATargetOfAnotherSizeIsScaledAndABadTargetIsAnError) {
-  Scene scene = example("unlit.json");
+  Scene scene = test_support::example_scene("unlit.json");
   auto target = create_image(context(), {.width = 20, .height = 10, .format = VK_FORMAT_R8G8B8A8_UNORM,
                                          .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                                   VK_IMAGE_USAGE_SAMPLED_BIT});

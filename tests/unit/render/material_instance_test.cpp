@@ -11,43 +11,10 @@
 namespace facet::runtime {
 namespace {
 
-class MaterialInstanceTest : public test_support::LavapipeTest {
+class MaterialInstanceTest : public test_support::RendererTest {
  protected:
-  // Two cubes of examples/shaders/Keywords.shader (its `Cull [_Cull]`)
-  // under one directional light.
-  static Scene cubes() {
-    Scene scene;
-    scene.path = "cubes";
-    scene.width = 48;
-    scene.height = 32;
-    scene.camera.transform.position = {0, 0.5f, -4};
-    scene.camera.transform.look_at = Vec3{0, 0, 0};
-    SceneLight sun;
-    sun.json_path = "lights[0]";
-    sun.transform.rotation = {40, -30, 0};
-    scene.lights.push_back(sun);
-    for (int i = 0; i < 2; ++i) {
-      SceneObject o;
-      o.json_path = "objects[" + std::to_string(i) + "]";
-      o.mesh = "cube";
-      o.transform.position = {float(i) * 1.6f - 0.8f, 0, 0};
-      o.transform.rotation = {20, 35, 0};
-      o.material.shader = test_support::example_shader("Keywords.shader");
-      o.material.json_path = o.json_path + ".material";
-      scene.objects.push_back(std::move(o));
-    }
-    return scene;
-  }
-  static std::unique_ptr<Renderer> make_renderer() {
-    auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
-    EXPECT_TRUE(renderer) << renderer.error().message;
-    return renderer ? std::move(*renderer) : nullptr;
-  }
-  static RenderedFrame fresh(const Scene& scene) {
-    auto frame = render_scene(context(), scene, test_support::with_compiler({}));
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
-  }
+  // Two cubes of examples/shaders/Keywords.shader (its `Cull [_Cull]`).
+  static Scene cubes() { return test_support::lit_cubes("Keywords.shader", 2, 48, 32); }
 };
 
 TEST_F(MaterialInstanceTest, EditsReplaceTheNamedPropertyAndKeywordsOnce) {

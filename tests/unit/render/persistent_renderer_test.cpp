@@ -14,29 +14,13 @@
 namespace facet::runtime {
 namespace {
 
-class PersistentRendererTest : public test_support::LavapipeTest {
+class PersistentRendererTest : public test_support::RendererTest {
  protected:
-  static Scene example(const std::string& name) {
-    auto scene = load_scene(std::string(FACET_SOURCE_DIR) + "/examples/scenes/" + name);
-    EXPECT_TRUE(scene) << scene.error().message;
-    return scene ? *scene : Scene{};
-  }
-  static std::unique_ptr<Renderer> make_renderer() {
-    auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
-    EXPECT_TRUE(renderer) << renderer.error().message;
-    return renderer ? std::move(*renderer) : nullptr;
-  }
   static RenderedFrame draw(Renderer& renderer, const Scene& scene, FrameOptions options = {}) {
     RenderedFrame frame;
     auto drawn = renderer.render(scene, frame, options);
     EXPECT_TRUE(drawn) << drawn.error().message;
     return frame;
-  }
-  // What a renderer of its own draws for `scene`: the reference.
-  static RenderedFrame fresh(const Scene& scene) {
-    auto frame = render_scene(context(), scene, test_support::with_compiler({}));
-    EXPECT_TRUE(frame) << frame.error().message;
-    return frame ? std::move(*frame) : RenderedFrame{};
   }
   static void expect_created_nothing(const RenderStats& stats) {
     EXPECT_EQ(stats.pipelines, 0u);
@@ -47,31 +31,7 @@ class PersistentRendererTest : public test_support::LavapipeTest {
     EXPECT_EQ(stats.variants_compiled, 0u);
     EXPECT_EQ(stats.shaders_loaded, 0u);
   }
-  // A grid of `count` cubes of examples/shaders/Keywords.shader under one
-  // directional light, as an engine's scene.
-  static Scene keyword_grid(int count) {
-    Scene scene;
-    scene.path = "keyword_grid";
-    scene.width = 64;
-    scene.height = 48;
-    scene.camera.transform.position = {0, 0, -8};
-    scene.camera.transform.look_at = Vec3{0, 0, 0};
-    SceneLight sun;
-    sun.json_path = "lights[0]";
-    sun.transform.rotation = {40, -30, 0};
-    scene.lights.push_back(sun);
-    for (int i = 0; i < count; ++i) {
-      SceneObject o;
-      o.json_path = "objects[" + std::to_string(i) + "]";
-      o.mesh = "cube";
-      o.transform.position = {float(i % 4) * 1.5f - 2.25f, float(i / 4) * 1.5f - 1.5f, 0};
-      o.transform.rotation = {30, 45, 0};
-      o.material.shader = test_support::example_shader("Keywords.shader");
-      o.material.json_path = o.json_path + ".material";
-      scene.objects.push_back(std::move(o));
-    }
-    return scene;
-  }
+  static Scene keyword_grid(int count) { return test_support::lit_cubes("Keywords.shader", count, 64, 48); }
   // Frame `f` of an engine's loop: every colour changes, _EMISSION moves along the grid.
   static void animate(Scene& scene, int f) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -93,7 +53,7 @@ class PersistentRendererTest : public test_support::LavapipeTest {
 TEST_F(PersistentRendererTest, TheSameSceneAgainIsRepeatedAndCreatesNothing) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   RenderedFrame first = draw(*renderer, scene);
   EXPECT_EQ(first.stats.frame_path, FramePath::prepared);
   EXPECT_EQ(first.stats.prepared_because, "");
@@ -111,7 +71,7 @@ TEST_F(PersistentRendererTest, TheSameSceneAgainIsRepeatedAndCreatesNothing) {
 TEST_F(PersistentRendererTest, AChangedTimeIsRepeatedAndDrawsTheNewTime) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   draw(*renderer, scene);
   scene.time = 3.5f;
   RenderedFrame later = draw(*renderer, scene);
@@ -122,7 +82,7 @@ TEST_F(PersistentRendererTest, AChangedTimeIsRepeatedAndDrawsTheNewTime) {
 TEST_F(PersistentRendererTest, ChangedValuesTransformsLightsAndCameraUpdateInPlace) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   draw(*renderer, scene);
   scene.objects[1].transform.position = {-0.3f, 0.7f, 0.2f};
   scene.objects[2].material.properties[0].numbers = {0.2f, 0.8f, 0.4f};
@@ -142,7 +102,7 @@ TEST_F(PersistentRendererTest, ChangedValuesTransformsLightsAndCameraUpdateInPla
 TEST_F(PersistentRendererTest, AddedAndRemovedObjectsUpdateInPlace) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   draw(*renderer, scene);
   SceneObject copy = scene.objects[1];
   copy.transform.position = {0.2f, 1.2f, -0.8f};
@@ -193,7 +153,7 @@ TEST_F(PersistentRendererTest, AnUnseenVariantIsCompiledOnUpdate) {
 TEST_F(PersistentRendererTest, WhatAnUpdateCannotCoverIsPreparedAnewWithTheReason) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   draw(*renderer, scene);
   RenderedFrame resized = draw(*renderer, scene, {.width = 40, .height = 30});
   EXPECT_EQ(resized.stats.frame_path, FramePath::prepared);
@@ -216,7 +176,7 @@ TEST_F(PersistentRendererTest, WhatAnUpdateCannotCoverIsPreparedAnewWithTheReaso
 TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("phong_lights.json");
+  Scene scene = test_support::example_scene("phong_lights.json");
   draw(*renderer, scene);
   Scene broken = scene;
   broken.objects[0].material.shader = "/nonexistent/Missing.shader";
@@ -232,7 +192,7 @@ TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
 TEST_F(PersistentRendererTest, TheFrameBuffersOfTheCallerAreReused) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
-  Scene scene = example("unlit.json");
+  Scene scene = test_support::example_scene("unlit.json");
   RenderedFrame frame;
   ASSERT_TRUE(renderer->render(scene, frame));
   const float* hdr = frame.hdr.data();

@@ -24,6 +24,39 @@ inline std::string example_shader(const std::string& name) {
   return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name;
 }
 
+// examples/scenes/<name>, loaded (a failure fails the test).
+inline Scene example_scene(const std::string& name) {
+  auto scene = load_scene(std::string(FACET_SOURCE_DIR) + "/examples/scenes/" + name);
+  EXPECT_TRUE(scene) << scene.error().message;
+  return scene ? *scene : Scene{};
+}
+
+// `count` cubes of examples/shaders/<shader> in rows of four, under one
+// directional light: a scene as an engine builds it in code.
+inline Scene lit_cubes(const std::string& shader, int count, int width, int height) {
+  Scene scene;
+  scene.path = "cubes";
+  scene.width = width;
+  scene.height = height;
+  scene.camera.transform.position = {0, 0.5f, -8};
+  scene.camera.transform.look_at = Vec3{0, 0, 0};
+  SceneLight sun;
+  sun.json_path = "lights[0]";
+  sun.transform.rotation = {40, -30, 0};
+  scene.lights.push_back(sun);
+  for (int i = 0; i < count; ++i) {
+    SceneObject o;
+    o.json_path = "objects[" + std::to_string(i) + "]";
+    o.mesh = "cube";
+    o.transform.position = {float(i % 4) * 1.5f - 2.25f, float(i / 4) * 1.5f - 1.5f, 0};
+    o.transform.rotation = {30, 45, 0};
+    o.material.shader = example_shader(shader);
+    o.material.json_path = o.json_path + ".material";
+    scene.objects.push_back(std::move(o));
+  }
+  return scene;
+}
+
 // `options` with the development layer, so that scenes may name .shader
 // files (one compiler for the test program, as an engine would keep one).
 inline RenderOptions with_compiler(RenderOptions options) {
@@ -31,6 +64,23 @@ inline RenderOptions with_compiler(RenderOptions options) {
   if (!options.shader_compiler) options.shader_compiler = compiler;
   return options;
 }
+
+// A suite that draws through Renderers on the shared context and compares
+// with what render_scene draws for the same scene.
+class RendererTest : public LavapipeTest {
+ protected:
+  static std::unique_ptr<Renderer> make_renderer() {
+    auto renderer = Renderer::create(context(), {.shader_compiler = with_compiler({}).shader_compiler});
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return renderer ? std::move(*renderer) : nullptr;
+  }
+  // What a renderer of its own draws for `scene`: the reference.
+  static RenderedFrame fresh(const Scene& scene) {
+    auto frame = render_scene(context(), scene, with_compiler({}));
+    EXPECT_TRUE(frame) << frame.error().message;
+    return frame ? std::move(*frame) : RenderedFrame{};
+  }
+};
 
 // A folder of this process's own, so that test runs in parallel do not meet.
 inline std::filesystem::path test_dir() {
