@@ -115,6 +115,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   out.stats.shaders_reloaded = library.forget_changed();
   // Whatever fails from here leaves no frame to keep.
   std::unique_ptr<SceneFrame> kept = std::move(s.frame);
+  const size_t textures_at_start = kept ? kept->resources.textures_loaded() : 0;  // an update may load some
   std::string because;
   FramePath path = FramePath::prepared;
   if (!kept) {
@@ -123,8 +124,10 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     because = "a shader changed on disk";
   } else if (options.capture) {
     because = "a frame capture";
+  } else if (!kept->kept_scene) {
+    because = "the renderer keeps no scene (RendererOptions::one_render)";
   } else if (out.width == kept->width && out.height == kept->height &&
-             (kept->scene.time = scene.time, kept->scene == scene)) {  // the kept time is redrawn anyway
+             (kept->kept_scene->time = scene.time, *kept->kept_scene == scene)) {  // the kept time is redrawn anyway
     path = FramePath::repeated;
   } else if (because = update_blocker(*kept, scene, out.width, out.height); because.empty()) {
     Result<std::string, RenderError> updated = update_frame(*kept, scene);
@@ -139,7 +142,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
                                 .shaders = s.store};
     Result<std::unique_ptr<SceneFrame>, RenderError> prepared = prepare_frame(
         s.context, scene, library, {.width = out.width, .height = out.height, .capture = options.capture,
-                                    .probe_options = probe_options});
+                                    .keep_scene = !s.options.one_render, .probe_options = probe_options});
     if (!prepared) return unexpected(prepared.error());
     kept = std::move(*prepared);
   }
@@ -152,7 +155,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   const bool fresh = path == FramePath::prepared;
   const size_t pools_before = fresh ? 0 : frame.binder.pools.pools_created();
   const size_t buffers_before = fresh ? 0 : frame.binder.arena.buffers_created();
-  const size_t textures_before = fresh ? 0 : frame.resources.textures_loaded();
+  const size_t textures_before = fresh ? 0 : textures_at_start;
   VkQueryPool queries = s.context.timestamp_pool();
   for (int f = 0; f < options.frames; ++f) {
     Clock::time_point frame_start = Clock::now();
@@ -185,7 +188,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   }
   if (!out.stats.frame_gpu_ms.empty()) out.stats.gpu_ms = median(out.stats.frame_gpu_ms);
   if (options.read_back) {
-    finish_image(out, static_cast<const std::byte*>(frame.readback->data()), frame.scene);
+    finish_image(out, static_cast<const std::byte*>(frame.readback->data()), scene);
   } else {
     out.hdr.clear();
     out.ldr.clear();
@@ -211,7 +214,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
 Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options) {
   Result<std::unique_ptr<Renderer>, RenderError> renderer = Renderer::create(
       context, {.shader_compiler = options.shader_compiler, .strict_variants = options.strict_variants,
-                .shaders = options.shaders});
+                .shaders = options.shaders, .one_render = true});
   if (!renderer) return unexpected(renderer.error());
   RenderedFrame frame;
   FACET_TRY((*renderer)->render(scene, frame, {.width = options.width, .height = options.height, .frames = options.frames,

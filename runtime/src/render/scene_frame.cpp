@@ -122,17 +122,17 @@ struct Loader {
 
 // The objects of `frame.scene` with their materials, meshes and probes.
 Result<void, RenderError> load_objects(SceneFrame& frame) {
-  Loader loader{frame.context,    frame.scene,        *frame.library,
+  Loader loader{frame.context,    *frame.scene,       *frame.library,
                 frame.resources,  frame.meshes,       frame.mesh_sources,
                 frame.meshes_loaded};
   frame.objects.clear();
-  frame.objects.reserve(frame.scene.objects.size());
-  for (size_t i = 0; i < frame.scene.objects.size(); ++i) {
+  frame.objects.reserve(frame.scene->objects.size());
+  for (size_t i = 0; i < frame.scene->objects.size(); ++i) {
     Result<ObjectState, RenderError> o = loader.object(i, frame.camera);
     if (!o) return unexpected(o.error());
     if (!frame.probe_images.empty()) {
-      ProbeChoice choice = choose_probes(frame.scene, o->center);
-      add_probe_values(o->draw, frame.scene, choice);
+      ProbeChoice choice = choose_probes(*frame.scene, o->center);
+      add_probe_values(o->draw, *frame.scene, choice);
       for (int slot : {0, 1}) {
         int probe = slot == 0 ? choice.probe0 : choice.probe1;
         o->probes[size_t(slot)] = probe >= 0 ? frame.probe_images[size_t(probe)] : nullptr;
@@ -153,13 +153,13 @@ void forget_unused_engine_meshes(SceneFrame& frame) {
     return entry.first.starts_with("memory:") && !drawn.contains(entry.second.get());
   });
   std::set<const MeshData*> used;
-  for (const SceneObject& o : frame.scene.objects) used.insert(o.mesh_data.get());
+  for (const SceneObject& o : frame.scene->objects) used.insert(o.mesh_data.get());
   std::erase_if(frame.mesh_sources, [&](const std::shared_ptr<const MeshData>& m) { return !used.contains(m.get()); });
 }
 
 // The lights, their shadow views, and the draw list of the loaded objects.
 Result<void, RenderError> build_lists(SceneFrame& frame) {
-  const Scene& scene = frame.scene;
+  const Scene& scene = *frame.scene;
   frame.lights = setup_lights(scene, frame.camera.view, frame.environment->ambient);
   frame.shadow_views.clear();
   for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -189,7 +189,7 @@ Result<std::vector<VkPipeline>, RenderError> pipelines_for(SceneFrame& frame, co
     bool created = false;
     Result<VkPipeline, std::string> p = get_pipeline(frame.context, *d.variant->program, d.state, owners[d.object].mirrored,
                                                      render_pass, frame.pipeline_cache, &created, color_targets);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", frame.scene.path, d.record.object, p.error())));
+    if (!p) return unexpected(error(fmt::format("{}: {}: {}", frame.scene->path, d.record.object, p.error())));
     out.push_back(*p);
     frame.pipelines_created += created;
   }
@@ -267,8 +267,9 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
                                                                ShaderLibrary& library, const FrameSetup& setup) {
   auto owned = std::make_unique<SceneFrame>(context);
   SceneFrame& frame = *owned;
-  frame.scene = scene_in;
-  const Scene& scene = frame.scene;
+  if (setup.keep_scene) frame.kept_scene = scene_in;
+  frame.scene = setup.keep_scene ? &*frame.kept_scene : &scene_in;
+  const Scene& scene = *frame.scene;
   frame.width = setup.width;
   frame.height = setup.height;
   frame.library = &library;
@@ -430,7 +431,7 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
 }
 
 std::string update_blocker(const SceneFrame& frame, const Scene& scene, int width, int height) {
-  const Scene& was = frame.scene;
+  const Scene& was = *frame.scene;
   if (width != frame.width || height != frame.height) return "the image size changed";
   if (frame.capture) return "the prepared frame was captured";
   if (!frame.shadows.maps.empty() || !frame.screen_shadows.list.draws.empty()) return "the frame has shadows";
@@ -452,14 +453,15 @@ std::string update_blocker(const SceneFrame& frame, const Scene& scene, int widt
 }
 
 Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& scene) {
-  frame.scene = scene;
+  frame.kept_scene = scene;
+  frame.scene = &*frame.kept_scene;
   frame.binder.restart();
   frame.pipelines_created = 0;
   frame.meshes_loaded = 0;
   frame.library->begin_render();
-  frame.camera = camera_matrices(frame.scene.camera, frame.width, frame.height);
+  frame.camera = camera_matrices(frame.scene->camera, frame.width, frame.height);
   // Replaced, not assigned: restart() dropped every pointer into the old values.
-  frame.frame_values = frame_uniforms(frame.scene, frame.camera, frame.width, frame.height, frame.environment->ambient);
+  frame.frame_values = frame_uniforms(*frame.scene, frame.camera, frame.width, frame.height, frame.environment->ambient);
   FACET_TRY(load_objects(frame));
   forget_unused_engine_meshes(frame);
   FACET_TRY(build_lists(frame));
@@ -472,8 +474,8 @@ Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& sc
 }
 
 void refresh_frame_values(SceneFrame& frame, const Scene& scene) {
-  frame.scene.time = scene.time;
-  frame.frame_values.assign(per_frame_uniforms(frame.scene, frame.camera, frame.width, frame.height));
+  if (frame.kept_scene) frame.kept_scene->time = scene.time;
+  frame.frame_values.assign(per_frame_uniforms(scene, frame.camera, frame.width, frame.height));
 }
 
 Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
@@ -505,8 +507,8 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
     vkCmdResetQueryPool(commands, queries, 0, 2);
     vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
   }
-  glm::vec3 clear = linear_color({frame.scene.camera.clear_color[0], frame.scene.camera.clear_color[1], frame.scene.camera.clear_color[2]});
-  if (capturing) frame.capture_out->clear_color = {clear.r, clear.g, clear.b, frame.scene.camera.clear_color[3]};
+  glm::vec3 clear = linear_color({frame.scene->camera.clear_color[0], frame.scene->camera.clear_color[1], frame.scene->camera.clear_color[2]});
+  if (capturing) frame.capture_out->clear_color = {clear.r, clear.g, clear.b, frame.scene->camera.clear_color[3]};
   Result<uint64_t, RenderError> shadow_triangles = record_shadow_maps(
       commands, frame.shadows, frame.objects,
       [&](VkCommandBuffer c, const Draw& d, const UniformValues& light_frame) {
@@ -561,9 +563,9 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
     vkCmdEndRenderPass(commands);
   }
   if (deferred) {
-    glm::vec3 clear_rgb = linear_color({frame.scene.camera.clear_color[0], frame.scene.camera.clear_color[1], frame.scene.camera.clear_color[2]});
+    glm::vec3 clear_rgb = linear_color({frame.scene->camera.clear_color[0], frame.scene->camera.clear_color[1], frame.scene->camera.clear_color[2]});
     std::array<VkClearValue, kGBufferTargets + 1> gclears{};
-    gclears[3].color = {{clear_rgb.r, clear_rgb.g, clear_rgb.b, frame.scene.camera.clear_color[3]}};
+    gclears[3].color = {{clear_rgb.r, clear_rgb.g, clear_rgb.b, frame.scene->camera.clear_color[3]}};
     gclears[4].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo g{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     g.renderPass = gbuffer.gbuffer_pass;
@@ -588,7 +590,7 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
                VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
   }
   VkClearValue clears[2]{};
-  clears[0].color = {{clear.r, clear.g, clear.b, frame.scene.camera.clear_color[3]}};
+  clears[0].color = {{clear.r, clear.g, clear.b, frame.scene->camera.clear_color[3]}};
   clears[1].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.renderPass = grabs.points.empty() ? fo.render_pass : fo.first_part;

@@ -31,6 +31,7 @@ namespace facet::runtime {
 struct FrameSetup {
   int width = 0, height = 0;
   FrameCapture* capture = nullptr;  // filled by the first record_frame
+  bool keep_scene = true;           // copy the scene into the frame (see SceneFrame::scene)
   RenderOptions probe_options;      // for the reflection probes' own renders
 };
 
@@ -40,7 +41,12 @@ struct SceneFrame {
   SceneFrame& operator=(const SceneFrame&) = delete;
 
   Context& context;
-  Scene scene;  // as prepared or last updated: what the objects point into
+  // The scene as prepared or last updated, which the objects point into: the
+  // frame's own copy (kept_scene), which a Renderer compares the next scene
+  // with, or, for a frame drawn by one render only (FrameSetup::keep_scene
+  // false: render_scene), the caller's scene, valid during that render.
+  std::optional<Scene> kept_scene;
+  const Scene* scene = nullptr;
   int width = 0, height = 0;
   ShaderLibrary* library = nullptr;
   Resources resources;
@@ -97,7 +103,7 @@ std::string update_blocker(const SceneFrame& frame, const Scene& scene, int widt
 Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& scene);
 
 // The camera and time values of the frame, recomputed from `scene` (whose
-// only difference from frame.scene is its time).
+// only difference from the frame's scene is its time).
 void refresh_frame_values(SceneFrame& frame, const Scene& scene);
 
 // Where a recorded frame goes: into an engine's image, to the host, or both.

@@ -76,6 +76,24 @@ TEST_F(MaterialInstanceTest, ColourKeywordAndCullEditsAreDrawnByAnUpdate) {
   EXPECT_TRUE(culled_front) << "the [_Cull] state is resolved again";
 }
 
+TEST_F(MaterialInstanceTest, ATextureFileBroughtByAnUpdateIsLoadedOnceAndCounted) {
+  auto renderer = make_renderer();
+  ASSERT_TRUE(renderer);
+  Scene scene = cubes();
+  RenderedFrame frame;
+  ASSERT_TRUE(renderer->render(scene, frame));
+  SceneTexture checker{.name = std::string(FACET_SOURCE_DIR) + "/examples/textures/checker.png"};
+  MaterialInstance(scene.objects[0].material).set_texture("_MainTex", checker);
+  ASSERT_TRUE(renderer->render(scene, frame));
+  EXPECT_EQ(frame.stats.frame_path, FramePath::updated) << frame.stats.prepared_because;
+  EXPECT_EQ(frame.stats.textures_loaded, 1u);
+  EXPECT_EQ(frame.hdr, fresh(scene).hdr);
+  MaterialInstance(scene.objects[1].material).set_texture("_MainTex", checker);
+  ASSERT_TRUE(renderer->render(scene, frame));
+  EXPECT_EQ(frame.stats.textures_loaded, 0u) << "the file is loaded already";
+  EXPECT_EQ(frame.hdr, fresh(scene).hdr);
+}
+
 TEST_F(MaterialInstanceTest, AnUndeclaredPropertyIsTheRendersErrorWithItsPath) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);

@@ -189,6 +189,18 @@ TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
   EXPECT_EQ(after.hdr, fresh(scene).hdr);
 }
 
+TEST_F(PersistentRendererTest, ARendererForOneRenderKeepsNoSceneAndPreparesEachRender) {
+  auto renderer = Renderer::create(
+      context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler, .one_render = true});
+  ASSERT_TRUE(renderer);
+  Scene scene = test_support::example_scene("unlit.json");
+  RenderedFrame first = draw(**renderer, scene);
+  RenderedFrame second = draw(**renderer, scene);
+  EXPECT_EQ(second.stats.frame_path, FramePath::prepared);
+  EXPECT_EQ(second.stats.prepared_because, "the renderer keeps no scene (RendererOptions::one_render)");
+  EXPECT_EQ(second.hdr, first.hdr);
+}
+
 TEST_F(PersistentRendererTest, TheFrameBuffersOfTheCallerAreReused) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);

@@ -165,6 +165,10 @@ struct RendererOptions {
   // Shaders shared with other renders (make_shader_store); empty: the
   // renderer keeps its own.
   std::shared_ptr<ShaderStore> shaders;
+  // A renderer for one render (render_scene's): it keeps no copy of the
+  // scene (0.36 KB an object in facet_scaling_bench's grid), so each render
+  // prepares anew.
+  bool one_render = false;
 };
 
 // An engine's image a Renderer copies each frame into (FrameOptions::target):
