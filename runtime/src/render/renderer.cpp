@@ -168,7 +168,10 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     const bool capturing = f == 0 && options.capture != nullptr;
     VkResultOf<void> submitted = s.submitter.submit(
         [&](VkCommandBuffer c) {
-          const FrameOutput output{options.target ? &*options.target : nullptr, options.read_back};
+          // After the first frame the target is in the layout the frame before left it in.
+          std::optional<ImageTarget> target = options.target;
+          if (target && f > 0) target->layout = target->final_layout;
+          const FrameOutput output{target ? &*target : nullptr, options.read_back};
           if (Result<void, RenderError> recorded = record_frame(frame, c, capturing, output, out.stats); !recorded) {
             failed = recorded.error();
           }

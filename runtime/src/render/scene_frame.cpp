@@ -252,6 +252,7 @@ std::string target_problem(const Context& context, const ImageTarget& target) {
   }
   VkFormatProperties p{};
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), target.format, &p);
+  if (is_depth_format(target.format)) return "the target's format is a depth format: it needs a colour one";
   if (!(p.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT)) {
     return fmt::format("the device cannot blit into the target's format (VkFormat {})", int(target.format));
   }
@@ -448,6 +449,14 @@ std::string update_blocker(const SceneFrame& frame, const Scene& scene, int widt
   }
   for (const SceneLight& light : scene.lights) {
     if (light.shadows != ShadowMode::none) return "a light casts shadows";
+  }
+  // The sky's sun lights the ambient and the environment cube, made when
+  // the frame was prepared.
+  if (scene.sky && scene.sky->sun) {
+    const size_t sun = size_t(scene.sky->sun->light);
+    if (sun >= scene.lights.size() || sun >= was.lights.size() || !(scene.lights[sun] == was.lights[sun])) {
+      return "the sky's sun changed";
+    }
   }
   return "";
 }

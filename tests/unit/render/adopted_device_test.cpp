@@ -179,6 +179,10 @@ TEST_F(AdoptedDeviceTest, ATargetOfAnotherSizeIsScaledAndABadTargetIsAnError) {
   auto texels = read_image(context(), *target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   ASSERT_TRUE(texels);
   EXPECT_TRUE(std::any_of(texels->begin(), texels->end(), [](std::byte b) { return b != std::byte{0}; }));
+  into.format = VK_FORMAT_D32_SFLOAT;
+  auto depth = (*renderer)->render(scene, frame, {.target = into});
+  ASSERT_FALSE(depth);
+  EXPECT_NE(depth.error().message.find("depth format"), std::string::npos) << depth.error().message;
   into.format = VK_FORMAT_BC1_RGB_UNORM_BLOCK;  // compressed: never a blit destination
   auto refused = (*renderer)->render(scene, frame, {.target = into});
   ASSERT_FALSE(refused);

@@ -173,6 +173,23 @@ TEST_F(PersistentRendererTest, WhatAnUpdateCannotCoverIsPreparedAnewWithTheReaso
   EXPECT_EQ(again.hdr, still_shadowed.hdr);
 }
 
+TEST_F(PersistentRendererTest, TheSkysSunLightingTheAmbientPreparesAnewWhenItTurns) {
+  auto renderer = make_renderer();
+  ASSERT_TRUE(renderer);
+  Scene scene = test_support::example_scene("phong_lights.json");
+  scene.sky = SceneSky{.sun = SceneSkySun{.light = 0}};
+  draw(*renderer, scene);
+  scene.lights[0].transform.rotation = {20, 60, 0};
+  RenderedFrame turned = draw(*renderer, scene);
+  EXPECT_EQ(turned.stats.frame_path, FramePath::prepared);
+  EXPECT_EQ(turned.stats.prepared_because, "the sky's sun changed");
+  EXPECT_EQ(turned.hdr, fresh(scene).hdr);
+  scene.lights[1].color = {0.3f, 0.3f, 1};  // not the sun: an update
+  RenderedFrame other = draw(*renderer, scene);
+  EXPECT_EQ(other.stats.frame_path, FramePath::updated) << other.stats.prepared_because;
+  EXPECT_EQ(other.hdr, fresh(scene).hdr);
+}
+
 TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);

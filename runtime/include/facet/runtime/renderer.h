@@ -176,7 +176,8 @@ struct RendererOptions {
 // tone mapping (RenderedFrame::hdr without the exposure), scaled with a
 // linear filter when the sizes differ. The image needs
 // VK_IMAGE_USAGE_TRANSFER_DST_BIT, optimal tiling, one layer and mip 0, and
-// a format the device can blit to (RGBA16F, RGBA8, ...).
+// a float or normalized colour format the device can blit to (RGBA16F,
+// RGBA8, ...; not an integer or depth one).
 struct ImageTarget {
   VkImage image = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_UNDEFINED;

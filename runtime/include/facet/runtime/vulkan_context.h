@@ -130,15 +130,6 @@ class Context {
  private:
   Context() = default;
   friend VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& options);
-
-// A context over an engine's instance, device and queue, with a command pool
-// and timestamp queries of its own (destroyed with it; the engine's objects
-// are not). Everything facet creates on it must go before the engine
-// destroys its device: destroy the Context (and the Renderers using it)
-// first. Queue submissions are facet's own: the engine must not use the
-// queue from another thread while a render runs. Errors: object_failed,
-// device_failed (no graphics on the queue family).
-VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
   friend VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
   friend struct ContextBuilder;
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
@@ -172,7 +163,10 @@ VkResultOf<std::unique_ptr<Context>> create_context(const ContextOptions& option
 // are not). Everything facet creates on it must go before the engine
 // destroys its device: destroy the Context (and the Renderers using it)
 // first. Queue submissions are facet's own: the engine must not use the
-// queue from another thread while a render runs. Errors: object_failed,
+// queue from another thread while a render runs, and facet waits for the
+// device to be idle (vkDeviceWaitIdle) when it frees a frame's targets, so
+// the engine must not submit to its other queues from another thread while
+// a render or the destruction of a Renderer or Context runs. Errors: object_failed,
 // device_failed (no graphics on the queue family).
 VkResultOf<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
 
