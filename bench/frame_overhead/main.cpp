@@ -23,6 +23,7 @@
 #include <iostream>
 #include <optional>
 
+#include "../render_calls.h"
 #include "bare_renderer.h"
 #include "facet/runtime/frame_capture.h"
 #include "facet/runtime/renderer.h"
@@ -60,7 +61,7 @@ std::vector<std::string> default_scenes() {
   std::vector<std::string> out;
   for (const auto& e : fs::directory_iterator(fs::path(FACET_SOURCE_DIR) / "examples/scenes")) {
     if (e.path().extension() != ".json") continue;
-    auto scene = runtime::load_scene(e.path().string());
+    auto scene = bench::load_scene(e.path().string());
     if (scene) out.push_back(e.path().string());
   }
   std::sort(out.begin(), out.end());
@@ -95,17 +96,17 @@ bool capture_refused(const std::string& message) {
 }
 
 Result<Row, std::string> measure(runtime::Context& context, const std::string& path, const Options& o, Skipped& skipped) {
-  auto scene = runtime::load_scene(path);
-  if (!scene) return unexpected(scene.error().message);
+  auto scene = bench::load_scene(path);
+  if (!scene) return unexpected(scene.error());
   runtime::RenderOptions render{.width = o.width, .height = o.height, .shader_compiler = runtime::make_shader_compiler()};
   runtime::FrameCapture capture;
   render.capture = &capture;
-  auto first = runtime::render_scene(context, *scene, render);
-  if (!first && capture_refused(first.error().message)) {
-    skipped.why = first.error().message.substr(first.error().message.find("a frame capture"));
+  auto first = bench::render_scene(context, *scene, render);
+  if (!first && capture_refused(first.error())) {
+    skipped.why = first.error().substr(first.error().find("a frame capture"));
     return Row{};
   }
-  if (!first) return unexpected(first.error().message);
+  if (!first) return unexpected(first.error());
   bench::BareRenderer bare(context, capture);
   FACET_TRY(bare.prepare());
   if (auto f = bare.render_frame(); !f) return unexpected(f.error());
@@ -123,8 +124,8 @@ Result<Row, std::string> measure(runtime::Context& context, const std::string& p
     bare_samples.gpu.push_back(frame->gpu_ms);
   };
   for (int r = 0; r < o.rounds; ++r) {
-    auto frames = runtime::render_scene(context, *scene, render);
-    if (!frames) return unexpected(frames.error().message);
+    auto frames = bench::render_scene(context, *scene, render);
+    if (!frames) return unexpected(frames.error());
     if (bare_failed) return unexpected(*bare_failed);
     const runtime::RenderStats& st = frames->stats;
     facet_samples.add(std::span(st.frame_ms).subspan(1),

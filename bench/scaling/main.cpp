@@ -40,6 +40,7 @@
 #include <string>
 
 #include "../frame_overhead/bare_renderer.h"
+#include "../render_calls.h"
 #include "facet/runtime/frame_capture.h"
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
@@ -127,8 +128,8 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
   auto shaders = runtime::make_shader_store();
   runtime::RenderOptions render{.shader_compiler = runtime::make_shader_compiler(), .shaders = shaders};
   // Compiled once into the store, so that the measured renders load nothing.
-  if (auto warm = runtime::render_scene(context, grid_scene(o.shader, 1, instancing), render); !warm) {
-    return unexpected(warm.error().message);
+  if (auto warm = bench::render_scene(context, grid_scene(o.shader, 1, instancing), render); !warm) {
+    return unexpected(warm.error());
   }
   Row row{.objects = count};
   // Memory: facet's render alone, sampled at its last frame.
@@ -141,7 +142,7 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
     during = resident_bytes();
     heap_during = double(mallinfo2().uordblks);
   };
-  if (auto r = runtime::render_scene(context, scene, render); !r) return unexpected(r.error().message);
+  if (auto r = bench::render_scene(context, scene, render); !r) return unexpected(r.error());
   row.growth_bytes = std::max(0.0, during - before);
   row.heap_bytes = std::max(0.0, heap_during - heap_before);
   row.kb_per_object = row.growth_bytes / 1024 / count;
@@ -150,8 +151,8 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
   render.frames = 1;
   render.after_frame = nullptr;
   render.capture = &capture;
-  auto first = runtime::render_scene(context, scene, render);
-  if (!first) return unexpected(first.error().message);
+  auto first = bench::render_scene(context, scene, render);
+  if (!first) return unexpected(first.error());
   row.draws = capture.draws.size();
   bench::BareRenderer bare(context, capture);
   FACET_TRY(bare.prepare());
@@ -167,8 +168,8 @@ Result<Row, std::string> measure(runtime::Context& context, const Options& o, in
     bare_cpu.push_back(frame->cpu_ms);
     bare_frame.push_back(frame->host_ms);
   };
-  auto timed = runtime::render_scene(context, scene, render);
-  if (!timed) return unexpected(timed.error().message);
+  auto timed = bench::render_scene(context, scene, render);
+  if (!timed) return unexpected(timed.error());
   if (bare_failed) return unexpected(*bare_failed);
   const runtime::RenderStats& st = timed->stats;
   std::vector<double> facet_cpu(st.frame_cpu_ms.begin() + 1, st.frame_cpu_ms.end());
@@ -197,14 +198,14 @@ void recolour(runtime::Scene& scene, int frame) {
 
 Result<RendererRow, std::string> measure_renderer(runtime::Context& context, const Options& o, int count) {
   runtime::Scene scene = grid_scene(o.shader, count, false);
-  auto renderer = runtime::Renderer::create(context, {.shader_compiler = runtime::make_shader_compiler()});
-  if (!renderer) return unexpected(renderer.error().message);
+  auto renderer = bench::create_renderer(context, {.shader_compiler = runtime::make_shader_compiler()});
+  if (!renderer) return unexpected(renderer.error());
   runtime::RenderedFrame frame;
   const runtime::FrameOptions loop{.records = false, .read_back = false};
   // The host's part of one render call: the call less its wait for the GPU.
   auto host_ms = [&]() -> Result<double, std::string> {
     auto start = std::chrono::steady_clock::now();
-    if (auto r = (*renderer)->render(scene, frame, loop); !r) return unexpected(r.error().message);
+    if (auto r = bench::render(**renderer, scene, frame, loop); !r) return unexpected(r.error());
     double call = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return call - (frame.stats.frame_ms[0] - frame.stats.frame_cpu_ms[0]);
   };

@@ -116,17 +116,20 @@ int main(int argc, char** argv) {
     return 1;
   }
   Scene scene = grid_scene(args.package, args.objects);
-  auto renderer = Renderer::create(**context, {.strict_variants = true});
+  // Errors are facet's diagnostics, printed as the compiler prints them.
+  facet::SourceMap sources;
+  facet::Diagnostics diags;
+  auto renderer = Renderer::create(**context, {.strict_variants = true}, diags);
   if (!renderer) {
-    std::fprintf(stderr, "facet_engine: %s\n", renderer.error().message.c_str());
+    std::fputs(facet::render_text(diags, sources).c_str(), stderr);
     return 1;
   }
   RenderedFrame last;
   uint64_t compiled = 0, loaded = 0, created_after_first = 0, updated = 0;
   for (int frame = 0; frame < args.frames; ++frame) {
     animate(scene, frame);
-    if (auto rendered = (*renderer)->render(scene, last, {.records = false}); !rendered) {
-      std::fprintf(stderr, "facet_engine: frame %d: %s\n", frame, rendered.error().message.c_str());
+    if (!(*renderer)->render(scene, last, {.records = false}, sources, diags)) {
+      std::fprintf(stderr, "facet_engine: frame %d:\n%s", frame, facet::render_text(diags, sources).c_str());
       return 1;
     }
     const RenderStats& stats = last.stats;
@@ -138,8 +141,8 @@ int main(int argc, char** argv) {
                              stats.meshes_loaded + stats.textures_loaded;
     }
   }
-  if (auto written = write_png(last, args.out); !written) {
-    std::fprintf(stderr, "facet_engine: %s\n", written.error().message.c_str());
+  if (!write_png(last, args.out, diags)) {
+    std::fputs(facet::render_text(diags, sources).c_str(), stderr);
     return 1;
   }
   std::printf("frames: %d, objects: %d, draws in the last frame: %zu, shaders loaded: %llu, variants compiled: %llu\n",

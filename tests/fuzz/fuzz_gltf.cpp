@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   bool binary = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';
   const std::string& path = binary ? glb : gltf;
   facet::fuzz::write_bytes(path, facet::fuzz::as_text(data, size));
-  facet::runtime::MeshError error;
+  facet::Diagnostics error;
   std::optional<facet::runtime::GltfModel> model =
       facet::runtime::load_gltf(path, error, {.materials = true, .limits = {}});
   if (model) {

@@ -7,7 +7,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = facet::fuzz::TempDir::get().file("mesh.obj");
   facet::fuzz::write_bytes(path, facet::fuzz::as_text(data, size));
-  facet::runtime::MeshError error;
+  facet::Diagnostics error;
   std::optional<facet::runtime::MeshData> mesh = facet::runtime::load_obj(path, error);
   if (mesh) {
     facet::runtime::compute_tangents(*mesh);

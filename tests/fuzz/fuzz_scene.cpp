@@ -6,6 +6,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = facet::fuzz::TempDir::get().file("scene.json");
-  (void)facet::runtime::parse_scene(std::string(facet::fuzz::as_text(data, size)), path);
+  facet::SourceMap sources;
+  facet::Diagnostics diags;
+  if (!facet::runtime::parse_scene(std::string(facet::fuzz::as_text(data, size)), path, sources, diags)) {
+    (void)facet::render_text(diags, sources);  // the printer runs over every located error too
+  }
   return 0;
 }

@@ -29,6 +29,7 @@ enum class DiagId : uint16_t {
 #include "facet/diag/backend.def"
 #include "facet/diag/package.def"
 #include "facet/diag/surface.def"
+#include "facet/diag/runtime.def"
 #undef FACET_DIAG
   count_
 };
@@ -93,6 +94,12 @@ class Diagnostics {
  private:
   std::vector<Diagnostic> items_;
 };
+
+// The same diagnostics pointing into `to`: each file a span, note, fix-it
+// or include-stack entry names in `from` is added to `to` (once per path).
+// For a caller that owns its SourceMap and receives diagnostics made against
+// another one (a render's, a failed load's).
+Diagnostics rebase_diagnostics(const Diagnostics& diags, const SourceMap& from, SourceMap& to);
 
 // How warnings are treated, as the command line asks (-w, -Werror, -Wno-x).
 struct WarningOptions {

@@ -27,6 +27,7 @@ constexpr std::array<DiagInfo, size_t(DiagId::count_)> kDiagTable = {{
 #include "facet/diag/backend.def"
 #include "facet/diag/package.def"
 #include "facet/diag/surface.def"
+#include "facet/diag/runtime.def"
 #undef FACET_DIAG
 }};
 
@@ -61,6 +62,29 @@ void Diagnostics::append(const Diagnostics& other) {
 }
 
 void Diagnostics::push(Diagnostic d) { items_.push_back(std::move(d)); }
+
+Diagnostics rebase_diagnostics(const Diagnostics& diags, const SourceMap& from, SourceMap& to) {
+  std::map<FileId, FileId> moved;
+  auto rebase = [&](SourceSpan& span) {
+    if (!span.has_location()) return;
+    if (span.file >= from.file_count()) {
+      span = {};
+      return;
+    }
+    auto [it, added] = moved.try_emplace(span.file, kNoFile);
+    if (added) it->second = to.add_file_once(from.path(span.file), from.text(span.file));
+    span.file = it->second;
+  };
+  Diagnostics out;
+  for (Diagnostic d : diags.all()) {
+    rebase(d.span);
+    for (DiagNote& note : d.notes) rebase(note.span);
+    for (FixIt& fix : d.fixits) rebase(fix.span);
+    for (SourceSpan& include : d.include_stack) rebase(include);
+    out.push(std::move(d));
+  }
+  return out;
+}
 
 size_t Diagnostics::error_count() const {
   return size_t(std::count_if(items_.begin(), items_.end(),

@@ -9,6 +9,7 @@
 
 #include "facet/support/suggest.h"
 #include "facet/variants.h"
+#include "scene/json_locate.h"
 
 namespace facet::runtime {
 namespace {
@@ -69,8 +70,8 @@ SceneTexture default_texture(const ir::Property& p) {
 double srgb_to_linear(double c) { return reference::FacetSRGBToLinear(c); }
 double linear_to_srgb(double c) { return reference::FacetLinearToSRGB(c); }
 
-Result<Material, MaterialError> make_material(const ir::Shader& shader, const SceneMaterial& scene,
-                                              const std::string& scene_path) {
+Result<Material> make_material(const ir::Shader& shader, const SceneMaterial& scene, const std::string& scene_path,
+                               SourceMap& sources, Diagnostics& diags) {
   Material m;
   m.shader_name = shader.name;
   m.queue = scene.queue;
@@ -82,7 +83,10 @@ Result<Material, MaterialError> make_material(const ir::Shader& shader, const Sc
   for (const SceneProperty& value : scene.properties) {
     const ir::Property* p = shader.find_property(value.name);
     auto fail = [&](const std::string& what) {
-      return unexpected(MaterialError{fmt::format("{}: {}: {}", scene_path, value.json_path, what)});
+      SourceSpan span = scene_value_span(sources, scene_path, value.json_path);
+      const std::string where = span.has_location() || scene_path.empty() ? "" : scene_path + ": ";
+      diags.add(DiagId::scene_material_property, span, fmt::format("{}{}: {}", where, value.json_path, what));
+      return failure();
     };
     if (!p && value.if_declared) continue;  // a glTF material's value for a property this shader lacks
     if (!p) return fail(unknown_property(shader, value));

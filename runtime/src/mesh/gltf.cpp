@@ -406,17 +406,17 @@ bool is_gltf_path(const std::string& path) {
   return extension == ".gltf" || extension == ".glb";
 }
 
-std::optional<GltfModel> load_gltf(const std::string& path, MeshError& error, const GltfOptions& options) {
+std::optional<GltfModel> load_gltf(const std::string& path, Diagnostics& diags, const GltfOptions& options) {
   std::string why;
   try {
     std::optional<GltfModel> model = read_gltf(path, options, why);
-    if (!model) error.message = fmt::format("{}: {}", path, why);
-    return model;
+    if (model) return model;
   } catch (const std::bad_alloc&) {
-    error.message = path + ": not enough memory to read the glTF file";
+    why = "not enough memory to read the glTF file";
   } catch (const std::exception& e) {
-    error.message = fmt::format("{}: {}", path, e.what());  // what tinygltf or nlohmann may still throw
+    why = e.what();  // what tinygltf or nlohmann may still throw
   }
+  diags.add(DiagId::mesh_invalid, SourceSpan{}, fmt::format("{}: {}", path, why));
   return std::nullopt;
 }
 

@@ -21,22 +21,22 @@ namespace facet::runtime {
 namespace {
 
 // The whole file, refused before reading when it is over the size limit.
-std::optional<std::string> read_text(const std::string& path, uint64_t max_bytes, MeshError& error) {
+std::optional<std::string> read_text(const std::string& path, uint64_t max_bytes, std::string& error) {
   std::error_code ec;
   uint64_t size = std::filesystem::file_size(path, ec);
   if (ec) {
-    error.message = fmt::format("{}: cannot read the OBJ file ({})", path, ec.message());
+    error = fmt::format("{}: cannot read the OBJ file ({})", path, ec.message());
     return std::nullopt;
   }
   if (size > max_bytes) {
-    error.message = fmt::format("{}: the file has {} bytes, more than the {} an OBJ mesh may have", path, size, max_bytes);
+    error = fmt::format("{}: the file has {} bytes, more than the {} an OBJ mesh may have", path, size, max_bytes);
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   if (!in && !in.eof()) {
-    error.message = fmt::format("{}: cannot read the OBJ file", path);
+    error = fmt::format("{}: cannot read the OBJ file", path);
     return std::nullopt;
   }
   return std::move(text).str();
@@ -67,7 +67,7 @@ void flat_normals(MeshData& mesh) {
   }
 }
 
-std::optional<MeshData> to_mesh(const tinyobj::ObjReader& reader, const std::string& path, MeshError& error) {
+std::optional<MeshData> to_mesh(const tinyobj::ObjReader& reader, const std::string& path, std::string& error) {
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   MeshData mesh;
   bool has_normals = true;
@@ -76,7 +76,7 @@ std::optional<MeshData> to_mesh(const tinyobj::ObjReader& reader, const std::str
       Vertex v;
       std::optional<std::array<float, 3>> position = attribute<3>(attrib.vertices, index.vertex_index);
       if (!position) {
-        error.message = fmt::format("{}: face index {} is outside the file's vertices", path, index.vertex_index + 1);
+        error = fmt::format("{}: face index {} is outside the file's vertices", path, index.vertex_index + 1);
         return std::nullopt;
       }
       v.position = *position;
@@ -105,38 +105,36 @@ bool bounds_are_finite(const MeshData& mesh) {
          std::isfinite(bounds.center[2]);
 }
 
-std::optional<MeshData> parse_obj(const std::string& text, const std::string& path, MeshError& error) {
+std::optional<MeshData> parse_obj(const std::string& text, const std::string& path, std::string& error) {
   tinyobj::ObjReader reader;
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   if (!reader.ParseFromString(text, "", config)) {
-    error.message = path + ": " + (reader.Error().empty() ? "cannot read the OBJ file" : reader.Error());
-    while (!error.message.empty() && error.message.back() == '\n') error.message.pop_back();
+    error = path + ": " + (reader.Error().empty() ? "cannot read the OBJ file" : reader.Error());
+    while (!error.empty() && error.back() == '\n') error.pop_back();
     return std::nullopt;
   }
   std::optional<MeshData> mesh = to_mesh(reader, path, error);
   if (!mesh) return std::nullopt;
   if (mesh->indices.empty()) {
-    error.message = path + ": the OBJ file has no faces (an empty mesh)";
+    error = path + ": the OBJ file has no faces (an empty mesh)";
     return std::nullopt;
   }
   if (!bounds_are_finite(*mesh)) {
-    error.message = path + ": the mesh is too large (its bounding sphere does not fit a float)";
+    error = path + ": the mesh is too large (its bounding sphere does not fit a float)";
     return std::nullopt;
   }
   compute_tangents(*mesh);
   return mesh;
 }
 
-}  // namespace
-
-std::optional<MeshData> load_obj(const std::string& path, MeshError& error) {
+std::optional<MeshData> read_obj(const std::string& path, std::string& error) {
   ObjLimits limits;
   std::optional<std::string> text = read_text(path, limits.max_file_bytes, error);
   if (!text) return std::nullopt;
   if (std::optional<ObjProblem> problem = check_obj_text(*text, limits)) {
-    error.message = problem->line ? fmt::format("{}:{}:{}: {}", path, problem->line, problem->column, problem->why)
-                                  : fmt::format("{}: {}", path, problem->why);
+    error = problem->line ? fmt::format("{}:{}:{}: {}", path, problem->line, problem->column, problem->why)
+                          : fmt::format("{}: {}", path, problem->why);
     return std::nullopt;
   }
   // The limits keep a checked mesh to a few GiB; a machine with less memory
@@ -144,9 +142,18 @@ std::optional<MeshData> load_obj(const std::string& path, MeshError& error) {
   try {
     return parse_obj(*text, path, error);
   } catch (const std::bad_alloc&) {
-    error.message = path + ": not enough memory to read the OBJ mesh";
+    error = path + ": not enough memory to read the OBJ mesh";
     return std::nullopt;
   }
+}
+
+}  // namespace
+
+std::optional<MeshData> load_obj(const std::string& path, Diagnostics& diags) {
+  std::string why;
+  std::optional<MeshData> mesh = read_obj(path, why);
+  if (!mesh) diags.add(DiagId::mesh_invalid, SourceSpan{}, std::move(why));
+  return mesh;
 }
 
 }  // namespace facet::runtime

@@ -14,7 +14,7 @@ SceneProperty colour(const std::string& name, const std::string& key, const Vec3
 
 }  // namespace
 
-Result<void, RenderError> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
                                              GpuMesh* quad, const LightValues* none, SceneObject& source,
                                              std::vector<ObjectState>& objects, DrawListResult& list) {
   source.name = scene.environment ? "environment" : "procedural sky";
@@ -38,18 +38,21 @@ Result<void, RenderError> add_sky_background(const Context& context, const Scene
       source.material.properties.push_back({"_SunCos", "ambient.sky.sun", {sun->cos_radius}, std::nullopt});
     }
   }
-  Result<ShaderAsset*, std::string> shader = library.load_built_in(source.material.shader);
+  Result<ShaderAsset*, Diagnostics> shader = library.load_built_in(source.material.shader);
   if (!shader) {
-    return unexpected(RenderError{fmt::format("{}: camera.clear: the sky shader, the stdlib's {}, does not load:\n{}",
-                                              scene.path, source.material.shader, shader.error())});
+    return unexpected(scene_error(library.report_sources(), scene, "camera.clear", DiagId::shader_unavailable,
+                                  fmt::format("the sky shader, the stdlib's {}, does not load", source.material.shader),
+                                  shader.error()));
   }
   source.material.shader = (*shader)->path;
   ObjectState s;
   s.index = objects.size();
   s.scene = &source;
   s.shader = *shader;
-  Result<Material, MaterialError> material = make_material(s.shader->shader, source.material, scene.path);
-  if (!material) return unexpected(RenderError{material.error().message});
+  Diagnostics material_diags;
+  Result<Material> material =
+      make_material(s.shader->shader, source.material, scene.path, library.report_sources(), material_diags);
+  if (!material) return unexpected(material_diags);
   s.material = std::move(*material);
   s.mesh = quad;
   s.draw = blit_uniforms();

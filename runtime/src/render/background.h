@@ -7,12 +7,13 @@
 #include <vector>
 
 #include "render/draw_list.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
 // Appends the background's object to `objects` (its `scene` points at
 // `source`, which must outlive the frame) and puts its draw first in `list`.
-Result<void, RenderError> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> add_sky_background(const Context& context, const Scene& scene, ShaderLibrary& library,
                                              GpuMesh* quad, const LightValues* none, SceneObject& source,
                                              std::vector<ObjectState>& objects, DrawListResult& list);
 

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-
 #include "facet/runtime/vulkan_context.h"
 #include "render/post.h"
 #include "render/shadows.h"
@@ -10,8 +9,6 @@
 
 namespace facet::runtime {
 namespace {
-
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
 
 constexpr std::array<VkFormat, 3> kGBufferFormats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM,
                                                      VK_FORMAT_A2B10G10R10_UNORM_PACK32};
@@ -29,7 +26,7 @@ DeferredTargets::~DeferredTargets() {
   }
 }
 
-Result<void, RenderError> make_deferred_targets(const Context& context, const Image& color, const Image& depth,
+Result<void, Diagnostics> make_deferred_targets(const Context& context, const Image& color, const Image& depth,
                                                 uint32_t width, uint32_t height, DeferredTargets& out) {
   out.device = context.device();
   std::vector<VkAttachmentDescription> gbuffer;
@@ -38,7 +35,7 @@ Result<void, RenderError> make_deferred_targets(const Context& context, const Im
     VkResultOf<Image> image =
         create_image(context, {.width = width, .height = height, .format = kGBufferFormats[i],
                                .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
-    if (!image) return unexpected(error(describe(image.error())));
+    if (!image) return unexpected(render_error(describe(image.error()), DiagId::vulkan_failed));
     out.gbuffer[i] = std::move(*image);
     gbuffer.push_back(attachment(kGBufferFormats[i], false, VK_IMAGE_LAYOUT_UNDEFINED,
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
@@ -53,10 +50,10 @@ Result<void, RenderError> make_deferred_targets(const Context& context, const Im
   gbuffer.back().stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
   views.push_back(color.view());
   views.push_back(depth.view());
-  Result<VkRenderPass, RenderError> pass = make_single_pass(out.device, gbuffer, true, "G-buffer");
+  Result<VkRenderPass, Diagnostics> pass = make_single_pass(out.device, gbuffer, true, "G-buffer");
   if (!pass) return unexpected(pass.error());
   out.gbuffer_pass = *pass;
-  Result<VkFramebuffer, RenderError> fb = make_framebuffer(out.device, out.gbuffer_pass, views, width, height);
+  Result<VkFramebuffer, Diagnostics> fb = make_framebuffer(out.device, out.gbuffer_pass, views, width, height);
   if (!fb) return unexpected(fb.error());
   out.gbuffer_framebuffer = *fb;
 
@@ -79,13 +76,14 @@ std::map<std::string, const Image*> gbuffer_textures(const DeferredTargets& targ
           {"_CameraDepthTexture", &depth}};
 }
 
-Result<std::unique_ptr<DeferredLights>, RenderError> build_deferred_lights(const Context& context, const Scene& scene,
+Result<std::unique_ptr<DeferredLights>, Diagnostics> build_deferred_lights(const Context& context, const Scene& scene,
                                                                            ShaderLibrary& library,
                                                                            const LightSetup& lights,
                                                                            const CameraMatrices& camera) {
   auto out = std::make_unique<DeferredLights>();
   if (scene.camera.projection != Projection::perspective) {
-    return unexpected(error(scene.path + ": camera.rendering_path: the deferred path needs a perspective camera"));
+    return unexpected(
+        render_error(scene.path + ": camera.rendering_path: the deferred path needs a perspective camera"));
   }
   FACET_TRY(make_screen_pass_object(context, scene, library, camera, "Internal-DeferredShading.shader",
                                     "the deferred light pass", "camera.rendering_path", out->screen));

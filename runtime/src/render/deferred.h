@@ -26,6 +26,7 @@
 #include "facet/runtime/image.h"
 #include "render/draw_list.h"
 #include "render/targets.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -45,7 +46,7 @@ inline constexpr uint32_t kGBufferTargets = 4;
 // The G-buffer images and both passes' render passes and framebuffers.
 // `color` (RGBA16F) ends the light pass in COLOR_ATTACHMENT_OPTIMAL; `depth`
 // (D32, sampled) ends the G-buffer pass in SHADER_READ_ONLY_OPTIMAL.
-Result<void, RenderError> make_deferred_targets(const Context& context, const Image& color, const Image& depth,
+Result<void, Diagnostics> make_deferred_targets(const Context& context, const Image& color, const Image& depth,
                                                 uint32_t width, uint32_t height, DeferredTargets& out);
 
 // The G-buffer textures and the depth by the names the light shader samples.
@@ -58,7 +59,7 @@ struct DeferredLights {
   DrawListResult list;
 };
 
-Result<std::unique_ptr<DeferredLights>, RenderError> build_deferred_lights(const Context& context, const Scene& scene,
+Result<std::unique_ptr<DeferredLights>, Diagnostics> build_deferred_lights(const Context& context, const Scene& scene,
                                                                            ShaderLibrary& library,
                                                                            const LightSetup& lights,
                                                                            const CameraMatrices& camera);

@@ -10,8 +10,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 }  // namespace
 
 UniformArena::UniformArena(const Context& context) : context_(context) {
@@ -20,7 +18,7 @@ UniformArena::UniformArena(const Context& context) : context_(context) {
   align_ = std::max<VkDeviceSize>(16, p.limits.minUniformBufferOffsetAlignment);
 }
 
-Result<UniformArena::Slice, RenderError> UniformArena::allocate(VkDeviceSize size) {
+Result<UniformArena::Slice, Diagnostics> UniformArena::allocate(VkDeviceSize size) {
   size = std::max<VkDeviceSize>(size, 16);
   while (current_ < chunks_.size() && used_ + size > chunks_[current_].size()) {
     ++current_;
@@ -28,7 +26,7 @@ Result<UniformArena::Slice, RenderError> UniformArena::allocate(VkDeviceSize siz
   }
   if (current_ == chunks_.size()) {
     VkResultOf<Buffer> b = create_buffer(context_, std::max<VkDeviceSize>(size, 1 << 18), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    if (!b) return unexpected(error(describe(b.error())));
+    if (!b) return unexpected(render_error(describe(b.error()), DiagId::vulkan_failed));
     chunks_.push_back(std::move(*b));
     used_ = 0;
   }
@@ -74,8 +72,8 @@ void DescriptorBinder::bind_sets(VkCommandBuffer commands, const GpuProgram& pro
   push_zeros(commands, program);
 }
 
-Result<const Image*, RenderError> DescriptorBinder::image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light,
-                                            bool screen_shadowed) {
+Result<const Image*, Diagnostics> DescriptorBinder::image_for(const ResourceBinding& r, const ObjectState& object,
+                                                              const LightValues& light, bool screen_shadowed) {
   if (auto it = overrides.find(r.name); it != overrides.end()) return it->second;
   // In any set: Unity's own AutoLight.cginc declares it outside facet's light set.
   if (r.name == "_ShadowMapTexture" && screen_shadowed && screen_shadows) {
@@ -85,7 +83,7 @@ Result<const Image*, RenderError> DescriptorBinder::image_for(const ResourceBind
   // Declared outside facet's light set: Unity's own AutoLight.cginc, whose
   // falloffs are textures (Resources::light_falloff, spot_cone).
   if (r.set != 1 && (r.name == "_LightTexture0" || r.name == "_LightTextureB0")) {
-    if (std::optional<Result<const Image*, RenderError>> t = unity_light_texture(r.name, light)) return *t;
+    if (std::optional<Result<const Image*, Diagnostics>> t = unity_light_texture(r.name, light)) return *t;
   }
   if (r.set == 1 && r.name == "_ShadowMapTexture" && shadows) {
     if (const Image* map = shadows->map_of(&light)) return map;
@@ -98,19 +96,21 @@ Result<const Image*, RenderError> DescriptorBinder::image_for(const ResourceBind
     auto it = object.material.textures.find(r.name);
     if (it != object.material.textures.end()) {
       Result<const LoadedTexture*, std::string> t = resources.texture(it->second);
-      if (!t) return unexpected(error(t.error()));
+      if (!t) return unexpected(render_error(t.error(), DiagId::texture_invalid));
       return &(*t)->image;
     }
   }
   Result<const Image*, std::string> f = resources.fallback(r.dim.empty() ? "2D" : r.dim, r.arrayed);
-  if (!f) return unexpected(error(fmt::format("resource '{}': {}", r.name, f.error())));
+  if (!f) return unexpected(render_error(fmt::format("resource '{}': {}", r.name, f.error()), DiagId::texture_invalid));
   return *f;
 }
 
-std::optional<Result<const Image*, RenderError>> DescriptorBinder::unity_light_texture(const std::string& name,
-                                                                     const LightValues& light) {
-  auto made = [&](Result<const Image*, std::string> image) -> Result<const Image*, RenderError> {
-    if (!image) return unexpected(error(fmt::format("resource '{}': {}", name, image.error())));
+std::optional<Result<const Image*, Diagnostics>> DescriptorBinder::unity_light_texture(const std::string& name,
+                                                                                       const LightValues& light) {
+  auto made = [&](Result<const Image*, std::string> image) -> Result<const Image*, Diagnostics> {
+    if (!image) {
+      return unexpected(render_error(fmt::format("resource '{}': {}", name, image.error()), DiagId::texture_invalid));
+    }
     return *image;
   };
   if (name == "_LightTextureB0" || light.keyword == "POINT") return made(resources.light_falloff());
@@ -124,14 +124,16 @@ std::optional<Result<const Image*, RenderError>> DescriptorBinder::unity_light_t
   return std::nullopt;
 }
 
-Result<const Image*, RenderError> DescriptorBinder::cookie_image(const LightValues& light) {
+Result<const Image*, Diagnostics> DescriptorBinder::cookie_image(const LightValues& light) {
   Result<const LoadedTexture*, std::string> t = resources.texture(*light.cookie);
-  if (!t) return unexpected(error(fmt::format("{}.cookie: {}", light.json_path, t.error())));
+  if (!t) {
+    return unexpected(render_error(fmt::format("{}.cookie: {}", light.json_path, t.error()), DiagId::texture_invalid));
+  }
   return &(*t)->image;
 }
 
-Result<void, RenderError> DescriptorBinder::bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
-                               const UniformValues& frame, CapturedDraw* captured) {
+Result<void, Diagnostics> DescriptorBinder::bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
+                                                 const UniformValues& frame, CapturedDraw* captured) {
   GpuProgram& program = *draw.variant->program;
   if (auto it = retained.find(&draw); it != retained.end()) {
     bind_sets(commands, program, it->second);
@@ -154,7 +156,7 @@ Result<void, RenderError> DescriptorBinder::bind(VkCommandBuffer commands, const
   Sets sets{};
   for (uint32_t set = 0; set < kSetCount; ++set) {
     if (!program.set_used[set]) continue;
-    Result<VkDescriptorSet, RenderError> ds =
+    Result<VkDescriptorSet, Diagnostics> ds =
         set_for(program, set, draw, object, layers, instances, screen_shadowed, captured);
     if (!ds) return unexpected(ds.error());
     sets[set] = *ds;
@@ -164,10 +166,11 @@ Result<void, RenderError> DescriptorBinder::bind(VkCommandBuffer commands, const
   return {};
 }
 
-Result<VkDescriptorSet, RenderError> DescriptorBinder::set_for(const GpuProgram& program, uint32_t set, const Draw& draw,
-                                             const ObjectState& object, const UniformLayers& layers,
-                                             const std::vector<UniformLayers>& instances, bool screen_shadowed,
-                                             CapturedDraw* captured) {
+Result<VkDescriptorSet, Diagnostics> DescriptorBinder::set_for(const GpuProgram& program, uint32_t set,
+                                                               const Draw& draw, const ObjectState& object,
+                                                               const UniformLayers& layers,
+                                                               const std::vector<UniformLayers>& instances,
+                                                               bool screen_shadowed, CapturedDraw* captured) {
   std::vector<const UniformBlock*> blocks;
   std::vector<std::vector<std::byte>> contents;
   for (const UniformBlock& block : program.blocks) {
@@ -188,7 +191,7 @@ Result<VkDescriptorSet, RenderError> DescriptorBinder::set_for(const GpuProgram&
   std::vector<std::vector<VkDescriptorImageInfo>> images;
   for (const ResourceBinding& r : program.resources) {
     if (r.set != set) continue;
-    Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> image =
+    Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, Diagnostics> image =
         image_info(r, object, *draw.light, screen_shadowed, set, captured);
     if (!image) return unexpected(image.error());
     bound.push_back(&r);
@@ -201,14 +204,14 @@ Result<VkDescriptorSet, RenderError> DescriptorBinder::set_for(const GpuProgram&
     if (auto it = shared_sets.find(key); it != shared_sets.end()) return it->second;
   }
   Result<VkDescriptorSet, std::string> allocated = pools.allocate(program.set_layouts[set], program.set_bindings[set]);
-  if (!allocated) return unexpected(error(allocated.error()));
+  if (!allocated) return unexpected(render_error(allocated.error()));
   VkDescriptorSet ds = *allocated;
   std::vector<VkDescriptorBufferInfo> buffers;
   std::vector<VkWriteDescriptorSet> writes;
   buffers.reserve(blocks.size());
   for (size_t b = 0; b < blocks.size(); ++b) {
     const UniformBlock& block = *blocks[b];
-    Result<UniformArena::Slice, RenderError> slice = arena.allocate(block.size);
+    Result<UniformArena::Slice, Diagnostics> slice = arena.allocate(block.size);
     if (!slice) return unexpected(slice.error());
     std::span<std::byte> bytes = slice->bytes.subspan(0, block.size);
     std::copy(contents[b].begin(), contents[b].end(), bytes.begin());
@@ -256,21 +259,24 @@ std::string DescriptorBinder::shared_key(VkDescriptorSetLayout layout, const Uni
   return key;
 }
 
-Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> DescriptorBinder::image_info(
+Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, Diagnostics> DescriptorBinder::image_info(
     const ResourceBinding& r, const ObjectState& object, const LightValues& light, bool screen_shadowed, uint32_t set,
     CapturedDraw* captured) {
   VkDescriptorImageInfo info{};
   Result<VkSampler, std::string> sampler = resources.sampler();
-  if (!sampler) return unexpected(error(sampler.error()));
+  if (!sampler) return unexpected(render_error(sampler.error()));
   info.sampler = *sampler;
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_SAMPLER;
   CapturedDescriptor described{set, r.binding, type, std::max(1u, r.array_size)};
   if (r.kind != ResourceKind::separate_sampler) {
-    Result<const Image*, RenderError> image = image_for(r, object, light, screen_shadowed);
+    Result<const Image*, Diagnostics> image = image_for(r, object, light, screen_shadowed);
     if (!image) return unexpected(image.error());
     if (captured) {
       Result<int, std::string> index = capture->image(*image);
-      if (!index) return unexpected(error(fmt::format("resource '{}': {}", r.name, index.error())));
+      if (!index) {
+        return unexpected(
+            render_error(fmt::format("resource '{}': {}", r.name, index.error()), DiagId::texture_invalid));
+      }
       described.image = *index;
     }
     // Depth is not linearly filterable; a shadow cube's distances must not
@@ -282,7 +288,7 @@ Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> Descript
     }
     if (resources.clamped(*image)) {
       Result<VkSampler, std::string> clamp = resources.clamp_sampler();
-      if (!clamp) return unexpected(error(clamp.error()));
+      if (!clamp) return unexpected(render_error(clamp.error()));
       info.sampler = *clamp;
     }
     info.imageView = (*image)->sample_view();

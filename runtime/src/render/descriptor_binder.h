@@ -20,6 +20,7 @@
 #include "render/resources.h"
 #include "render/screen_shadows.h"
 #include "render/shadow_pass.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -33,7 +34,7 @@ class UniformArena {
     VkDeviceSize offset;
     std::span<std::byte> bytes;
   };
-  Result<Slice, RenderError> allocate(VkDeviceSize size);
+  Result<Slice, Diagnostics> allocate(VkDeviceSize size);
   void reset() {
     current_ = 0;
     used_ = 0;
@@ -102,23 +103,23 @@ struct DescriptorBinder {
 
   void bind_sets(VkCommandBuffer commands, const GpuProgram& program, const Sets& sets);
 
-  Result<const Image*, RenderError> image_for(const ResourceBinding& r, const ObjectState& object, const LightValues& light,
-                                              bool screen_shadowed);
+  Result<const Image*, Diagnostics> image_for(const ResourceBinding& r, const ObjectState& object,
+                                              const LightValues& light, bool screen_shadowed);
 
   // What Unity's AutoLight samples as `name` for `light`: the attenuation
   // ramp (_LightTextureB0, a point light's _LightTexture0), a spot's cone or
   // cookie, a directional light's cookie; nullopt for anything else.
-  std::optional<Result<const Image*, RenderError>> unity_light_texture(const std::string& name,
+  std::optional<Result<const Image*, Diagnostics>> unity_light_texture(const std::string& name,
                                                                        const LightValues& light);
 
-  Result<const Image*, RenderError> cookie_image(const LightValues& light);
+  Result<const Image*, Diagnostics> cookie_image(const LightValues& light);
 
   // `captured`: where the descriptors' contents go when capturing the frame.
-  Result<void, RenderError> bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
+  Result<void, Diagnostics> bind(VkCommandBuffer commands, const Draw& draw, const ObjectState& object,
                                  const UniformValues& frame, CapturedDraw* captured = nullptr);
 
   // Set `set` of `draw`: a shared one with the same contents, or a new one.
-  Result<VkDescriptorSet, RenderError> set_for(const GpuProgram& program, uint32_t set, const Draw& draw,
+  Result<VkDescriptorSet, Diagnostics> set_for(const GpuProgram& program, uint32_t set, const Draw& draw,
                                                const ObjectState& object, const UniformLayers& layers,
                                                const std::vector<UniformLayers>& instances, bool screen_shadowed,
                                                CapturedDraw* captured);
@@ -131,9 +132,11 @@ struct DescriptorBinder {
 
   // The descriptor type and image info of resource `r` (a separate sampler
   // gets the sampler alone).
-  Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, RenderError> image_info(
-      const ResourceBinding& r, const ObjectState& object, const LightValues& light, bool screen_shadowed, uint32_t set,
-      CapturedDraw* captured);
+  Result<std::pair<VkDescriptorType, VkDescriptorImageInfo>, Diagnostics> image_info(const ResourceBinding& r,
+                                                                                     const ObjectState& object,
+                                                                                     const LightValues& light,
+                                                                                     bool screen_shadowed, uint32_t set,
+                                                                                     CapturedDraw* captured);
 };
 
 }  // namespace facet::runtime

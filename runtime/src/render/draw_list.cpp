@@ -18,12 +18,12 @@ std::string light_description(const Scene& scene, size_t i) {
   return fmt::format("{} ({})", scene.lights[i].json_path, type);
 }
 
-Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data) {
+Result<GpuMesh, Diagnostics> upload_mesh(const Context& context, const MeshData& data) {
   GpuMesh mesh;
   VkResultOf<Buffer> v = create_buffer(context, data.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   VkResultOf<Buffer> i = create_buffer(context, data.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-  if (!v) return unexpected(RenderError{describe(v.error())});
-  if (!i) return unexpected(RenderError{describe(i.error())});
+  if (!v) return unexpected(render_error(describe(v.error()), DiagId::vulkan_failed));
+  if (!i) return unexpected(render_error(describe(i.error()), DiagId::vulkan_failed));
   std::memcpy(v->data(), data.vertices.data(), data.vertices.size() * sizeof(Vertex));
   std::memcpy(i->data(), data.indices.data(), data.indices.size() * 4);
   mesh.vertices = std::move(*v);
@@ -138,7 +138,7 @@ Role role_of(const ir::Pass& pass, bool forward_shader, bool deferred, std::stri
 
 }  // namespace
 
-Result<void, RenderError> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
                                    ObjectState& object, size_t pass_index, const LightValues* light,
                                    const std::vector<std::string>& global, DrawRecord record, DrawListResult& out) {
   ShaderAsset& asset = *object.shader;
@@ -153,7 +153,7 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
       variants::select_variant(pass.keywords, object.material.keywords, global, select, diags);
   std::string where = fmt::format("{}: {}: shader '{}' pass {}", scene.path, object.scene->material.json_path,
                                   asset.shader.name, record.pass);
-  if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+  if (!pick) return unexpected(render_error_in(where, DiagId::variant_missing, diags));
   if (asset.package && !pick->exact) {
     std::vector<std::string> asked = object.material.keywords;
     asked.insert(asked.end(), global.begin(), global.end());
@@ -162,7 +162,7 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
     if (const std::string* source = library.on_demand_source(asset, no_source)) {
       // The exact variant, compiled from the .shader the package was built from.
       pick = variants::select_variant(pass.keywords, object.material.keywords, global, {}, diags);
-      if (!pick) return unexpected(RenderError{fmt::format("{}: {}", where, render_text(diags, asset.sources))});
+      if (!pick) return unexpected(render_error_in(where, DiagId::variant_missing, diags));
       library.record_miss(fmt::format("{}; compiled on demand from {}", miss, *source));
       record.why += fmt::format("; compiled on demand from {} (the package lacks the variant)", *source);
     } else {
@@ -172,14 +172,14 @@ Result<void, RenderError> add_draw(const Context& context, const Scene& scene, S
     }
   }
   bool compiled = false;
-  Result<LoadedVariant*, std::string> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
-  if (!variant) return unexpected(RenderError{fmt::format("{}:\n{}", where, variant.error())});
+  Result<LoadedVariant*, Diagnostics> variant = library.variant(context, asset, pass_index, pick->key, &compiled);
+  if (!variant) return unexpected(render_error_in(where, DiagId::shader_unavailable, variant.error()));
   if (compiled) {
     ++out.variants_compiled;
     out.compiled.push_back(fmt::format("{} {}: {}", asset.shader.name, record.pass, join((*variant)->keywords)));
   }
-  Result<PipelineState, StateError> state = resolve_state(pass.ir.state, object.material);
-  if (!state) return unexpected(RenderError{fmt::format("{}: {}", where, state.error().message)});
+  Result<PipelineState> state = resolve_state(pass.ir.state, object.material, diags);
+  if (!state) return unexpected(render_error_in(where, DiagId::render_state_property, diags));
   Draw draw;
   draw.object = object.index;
   draw.pass = pass_index;
@@ -216,12 +216,12 @@ struct Builder {
   ShaderLibrary& library;
   DrawListResult out;
 
-  Result<void, RenderError> add(ObjectState& object, size_t pass_index, const LightValues* light,
+  Result<void, Diagnostics> add(ObjectState& object, size_t pass_index, const LightValues* light,
                                 const std::vector<std::string>& global, DrawRecord record) {
     return add_draw(context, scene, library, object, pass_index, light, global, std::move(record), out);
   }
 
-  Result<void, RenderError> vertex_lit_draw(ObjectState& object, size_t p, const std::vector<std::string>& fog,
+  Result<void, Diagnostics> vertex_lit_draw(ObjectState& object, size_t p, const std::vector<std::string>& fog,
                                             const std::string& fog_note, DrawRecord record) {
     std::vector<size_t> chosen = vertex_lights(scene, lights, object);
     const LightValues& values = out.draw_lights.emplace_back(vertex_light_values(scene, chosen, lights.view));
@@ -232,7 +232,7 @@ struct Builder {
   }
 
   // ForwardBase: the main light, and the object's vertex and SH lights.
-  Result<void, RenderError> base_draw(ObjectState& object, size_t p, const ObjectLights& scheduled,
+  Result<void, Diagnostics> base_draw(ObjectState& object, size_t p, const ObjectLights& scheduled,
                                       const std::vector<std::string>& fog, const std::string& fog_note,
                                       DrawRecord record) {
     std::vector<std::string> global = {"DIRECTIONAL", "LIGHTPROBE_SH"};
@@ -282,7 +282,7 @@ struct Builder {
     return add(object, p, light, global, std::move(record));
   }
 
-  Result<void, RenderError> object_draws(ObjectState& object) {
+  Result<void, Diagnostics> object_draws(ObjectState& object) {
     std::vector<std::string> fog = fog_keywords(scene);
     std::string fog_note = fog.empty() ? "" : fmt::format("; fog {}", fog[0]);
     bool forward_shader = std::any_of(object.shader->passes.begin(), object.shader->passes.end(),
@@ -295,7 +295,7 @@ struct Builder {
       std::vector<std::string> before = grab_passes_before(*object.shader, p);
       grabs.insert(grabs.end(), before.begin(), before.end());
       const size_t first_draw = out.draws.size();
-      Result<void, RenderError> drawn = pass_draws(object, p, pass, scheduled, fog, fog_note, forward_shader, deferred);
+      Result<void, Diagnostics> drawn = pass_draws(object, p, pass, scheduled, fog, fog_note, forward_shader, deferred);
       if (!drawn) return drawn;
       if (out.draws.size() > first_draw && !grabs.empty()) {
         Draw& d = out.draws[first_draw];
@@ -308,7 +308,7 @@ struct Builder {
   }
 
   // The draws of pass `p` of `object`: none (skipped), one, or one per light.
-  Result<void, RenderError> pass_draws(ObjectState& object, size_t p, const ir::Pass& pass,
+  Result<void, Diagnostics> pass_draws(ObjectState& object, size_t p, const ir::Pass& pass,
                                        const ObjectLights& scheduled, const std::vector<std::string>& fog,
                                        const std::string& fog_note, bool forward_shader, bool deferred) {
     DrawRecord record = pass_record(object, p);
@@ -335,7 +335,7 @@ struct Builder {
   // light is added later from the G-buffer. Unity's HDR camera: the light
   // buffer is the RGBA16F colour target (UNITY_HDR_ON). No fog: Unity's
   // deferred path leaves fog to an image effect.
-  Result<void, RenderError> gbuffer_draw(ObjectState& object, size_t p, DrawRecord record) {
+  Result<void, Diagnostics> gbuffer_draw(ObjectState& object, size_t p, DrawRecord record) {
     record.why = "Deferred: the G-buffer (diffuse, specular and smoothness, normal) and ambient, reflections and "
                  "emission into the light buffer; the lights are added from the G-buffer";
     const size_t before = out.draws.size();
@@ -346,7 +346,7 @@ struct Builder {
   }
 
   // ForwardAdd: one draw per further pixel light.
-  Result<void, RenderError> additive_draws(ObjectState& object, size_t p, const ObjectLights& scheduled,
+  Result<void, Diagnostics> additive_draws(ObjectState& object, size_t p, const ObjectLights& scheduled,
                                            const std::vector<std::string>& fog, const std::string& fog_note,
                                            DrawRecord record) {
     const std::vector<size_t>& extra = scheduled.pixel;
@@ -465,7 +465,7 @@ std::vector<size_t> vertex_lights(const Scene& scene, const LightSetup& setup, c
   return out;
 }
 
-Result<DrawListResult, RenderError> build_draws(const Context& context, const Scene& scene,
+Result<DrawListResult, Diagnostics> build_draws(const Context& context, const Scene& scene,
                                                 std::vector<ObjectState>& objects, const LightSetup& lights,
                                                 ShaderLibrary& library) {
   Builder builder{context, scene, objects, lights, library, {}};

@@ -22,6 +22,7 @@
 #include "facet/support/text.h"
 #include "render/frame_values.h"
 #include "render/shaders.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -32,7 +33,7 @@ struct GpuMesh {
 };
 
 // The mesh in host-visible vertex and index buffers.
-Result<GpuMesh, RenderError> upload_mesh(const Context& context, const MeshData& data);
+Result<GpuMesh, Diagnostics> upload_mesh(const Context& context, const MeshData& data);
 
 struct ObjectState {
   size_t index = 0;
@@ -128,11 +129,11 @@ struct DrawListResult {
 // Appends the draw of pass `pass_index` of `object` to out.draws: the
 // variant Unity would pick for the material's and the `global` keywords
 // (compiled on first use) and the render state resolved against the material.
-Result<void, RenderError> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> add_draw(const Context& context, const Scene& scene, ShaderLibrary& library,
                                    ObjectState& object, size_t pass_index, const LightValues* light,
                                    const std::vector<std::string>& global, DrawRecord record, DrawListResult& out);
 
-Result<DrawListResult, RenderError> build_draws(const Context& context, const Scene& scene,
+Result<DrawListResult, Diagnostics> build_draws(const Context& context, const Scene& scene,
                                                 std::vector<ObjectState>& objects, const LightSetup& lights,
                                                 ShaderLibrary& library);
 

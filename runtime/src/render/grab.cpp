@@ -8,7 +8,7 @@
 
 namespace facet::runtime {
 
-Result<GrabPlan, RenderError> plan_grabs(const Context& context, const Scene& scene, const std::vector<Draw>& draws,
+Result<GrabPlan, Diagnostics> plan_grabs(const Context& context, const Scene& scene, const std::vector<Draw>& draws,
                                          uint32_t width, uint32_t height) {
   GrabPlan plan;
   std::set<std::string> declared = {kGrabTexture};
@@ -26,9 +26,9 @@ Result<GrabPlan, RenderError> plan_grabs(const Context& context, const Scene& sc
     if (!point.names.empty()) plan.points.push_back(std::move(point));
     for (const std::string& name : declared) {
       if (samples(d, name) && !filled.count(name)) {
-        return unexpected(RenderError{fmt::format(
-            "{}: {}: pass '{}' samples {}, but no GrabPass copied the screen into it before this draw", scene.path,
-            d.record.object, d.record.pass, name)});
+        return unexpected(render_error(
+            fmt::format("{}: {}: pass '{}' samples {}, but no GrabPass copied the screen into it before this draw",
+                        scene.path, d.record.object, d.record.pass, name)));
       }
     }
   }
@@ -36,7 +36,10 @@ Result<GrabPlan, RenderError> plan_grabs(const Context& context, const Scene& sc
     VkResultOf<Image> image = create_image(context, {.width = width, .height = height,
                                                      .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-    if (!image) return unexpected(RenderError{fmt::format("the GrabPass texture {}: {}", name, describe(image.error()))});
+    if (!image) {
+      return unexpected(render_error(fmt::format("the GrabPass texture {}: {}", name, describe(image.error())),
+                                     DiagId::vulkan_failed));
+    }
     plan.images.emplace(name, std::move(*image));
   }
   return plan;

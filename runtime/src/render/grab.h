@@ -12,6 +12,7 @@
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/vulkan_context.h"
 #include "render/draw_list.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -28,7 +29,7 @@ struct GrabPlan {
 // Where the screen is copied in `draws` (submission order) and the images
 // it is copied into. A draw that samples a grab texture no GrabPass filled
 // before it is an error: Unity would sample an unset texture.
-Result<GrabPlan, RenderError> plan_grabs(const Context& context, const Scene& scene, const std::vector<Draw>& draws,
+Result<GrabPlan, Diagnostics> plan_grabs(const Context& context, const Scene& scene, const std::vector<Draw>& draws,
                                          uint32_t width, uint32_t height);
 
 // Copies `color` (TRANSFER_SRC_OPTIMAL, as a part of the split render pass

@@ -14,12 +14,15 @@ namespace facet::runtime {
 namespace {
 
 template <typename Pixel>
-Result<void, RenderError> write_atomically(const std::string& path, const RenderedFrame& frame, const Pixel* pixels) {
+Result<void> write_atomically(const std::string& path, const RenderedFrame& frame, const Pixel* pixels,
+                              Diagnostics& diags) {
   Result<void, std::string> written = support::replace_file_atomically(path, [&](const std::string& temporary) {
     return write_image_file(temporary, frame.width, frame.height, pixels);
   });
-  if (!written) return unexpected(RenderError{fmt::format("{}: cannot write the image: {}", path, written.error())});
-  return {};
+  if (written) return {};
+  diags.add(DiagId::output_unwritable, SourceSpan{},
+            fmt::format("{}: cannot write the image: {}", path, written.error()));
+  return failure();
 }
 
 std::string join(const std::vector<std::string>& words) {
@@ -30,12 +33,12 @@ std::string join(const std::vector<std::string>& words) {
 
 }  // namespace
 
-Result<void, RenderError> write_png(const RenderedFrame& frame, const std::string& path) {
-  return write_atomically(path, frame, frame.ldr.data());
+Result<void> write_png(const RenderedFrame& frame, const std::string& path, Diagnostics& diags) {
+  return write_atomically(path, frame, frame.ldr.data(), diags);
 }
 
-Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::string& path) {
-  return write_atomically(path, frame, frame.hdr.data());
+Result<void> write_exr(const RenderedFrame& frame, const std::string& path, Diagnostics& diags) {
+  return write_atomically(path, frame, frame.hdr.data(), diags);
 }
 
 // --explain names each pass of each object once: its draws (numbered in

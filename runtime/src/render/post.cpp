@@ -29,14 +29,15 @@ UniformValues blit_uniforms() {
 
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
-
-Result<void, RenderError> texel_sizes(Material& material, Resources& resources, const Scene& scene,
+Result<void, Diagnostics> texel_sizes(Material& material, Resources& resources, const Scene& scene,
                                       const ScenePostEffect& effect) {
   for (const auto& [name, ref] : material.textures) {
     Result<const LoadedTexture*, std::string> t = resources.texture(ref);
-    if (!t) return unexpected(error(fmt::format("{}: {}.properties.{}: {}", scene.path, effect.json_path, name, t.error())));
+    if (!t) {
+      return unexpected(
+          render_error(fmt::format("{}: {}.properties.{}: {}", scene.path, effect.json_path, name, t.error()),
+                       DiagId::texture_invalid));
+    }
     float w = float((*t)->width), h = float((*t)->height);
     material.uniforms.set_vector(name + "_TexelSize", 1 / w, 1 / h, w, h);
   }
@@ -60,7 +61,7 @@ bool samples(const Draw& draw, std::string_view name) {
   return std::any_of(r.begin(), r.end(), [&](const ResourceBinding& b) { return b.name == name; });
 }
 
-Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& context, const Scene& scene,
+Result<std::unique_ptr<PostChain>, Diagnostics> build_post_chain(const Context& context, const Scene& scene,
                                                                  ShaderLibrary& library, Resources& resources,
                                                                  GpuMesh* quad, const LightValues* none, int width,
                                                                  int height) {
@@ -74,10 +75,10 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
     source.json_path = effect.json_path;
     source.mesh = "quad";
     source.material = effect.material;
-    Result<ShaderAsset*, std::string> shader = library.load(effect.material.shader);
+    Result<ShaderAsset*, Diagnostics> shader = library.load(effect.material.shader);
     if (!shader) {
-      return unexpected(error(fmt::format("{}: {}.shader: the shader does not compile:\n{}", scene.path,
-                                          effect.json_path, shader.error())));
+      return unexpected(scene_error(library.report_sources(), scene, effect.json_path + ".shader",
+                                    DiagId::shader_unavailable, "the shader does not compile", shader.error()));
     }
     // By the pass's index in its SubShader: a package may hold only some passes.
     const std::vector<SelectedPass>& passes = (*shader)->passes;
@@ -85,17 +86,20 @@ Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& 
     if (at == passes.end()) {
       std::vector<std::string> indices;
       for (const SelectedPass& p : passes) indices.push_back(std::to_string(p.pass));
-      return unexpected(error(fmt::format("{}: {}.pass: the shader '{}' has no pass {} (its passes: {})", scene.path,
-                                          effect.json_path, (*shader)->shader.name, effect.pass,
-                                          indices.empty() ? "none" : fmt::format("{}", fmt::join(indices, ", ")))));
+      return unexpected(
+          render_error(fmt::format("{}: {}.pass: the shader '{}' has no pass {} (its passes: {})", scene.path,
+                                   effect.json_path, (*shader)->shader.name, effect.pass,
+                                   indices.empty() ? "none" : fmt::format("{}", fmt::join(indices, ", ")))));
     }
     positions.push_back(size_t(at - passes.begin()));
     ObjectState s;
     s.index = i;
     s.scene = &source;
     s.shader = *shader;
-    Result<Material, MaterialError> material = make_material(s.shader->shader, effect.material, scene.path);
-    if (!material) return unexpected(error(material.error().message));
+    Diagnostics material_diags;
+    Result<Material> material =
+        make_material(s.shader->shader, effect.material, scene.path, library.report_sources(), material_diags);
+    if (!material) return unexpected(material_diags);
     s.material = std::move(*material);
     FACET_TRY(texel_sizes(s.material, resources, scene, effect));
     s.material.uniforms.set_vector("_MainTex_TexelSize", 1.0f / float(width), 1.0f / float(height), float(width),

@@ -11,6 +11,7 @@
 
 #include "render/draw_list.h"
 #include "render/resources.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -22,7 +23,7 @@ struct PostChain {
 
 // Loads each effect's shader and material and compiles the variant of its
 // pass; `quad` is the built-in quad on the GPU, `none` the black light.
-Result<std::unique_ptr<PostChain>, RenderError> build_post_chain(const Context& context, const Scene& scene,
+Result<std::unique_ptr<PostChain>, Diagnostics> build_post_chain(const Context& context, const Scene& scene,
                                                                  ShaderLibrary& library, Resources& resources,
                                                                  GpuMesh* quad, const LightValues* none, int width,
                                                                  int height);

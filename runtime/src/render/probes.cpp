@@ -1,4 +1,5 @@
 #include "render/probes.h"
+#include "render/shaders.h"
 
 #include <fmt/format.h>
 
@@ -44,7 +45,7 @@ void set_probe(UniformValues& u, const Scene& scene, int probe, int slot, float 
 
 }  // namespace
 
-Result<std::vector<CubeMips>, RenderError> render_probes(Context& context, const Scene& scene,
+Result<std::vector<CubeMips>, Diagnostics> render_probes(Context& context, const Scene& scene,
                                                          const RenderOptions& options) {
   std::vector<CubeMips> cubes;
   // One library for every face of every probe: each compiles a variant once.
@@ -68,10 +69,15 @@ Result<std::vector<CubeMips>, RenderError> render_probes(Context& context, const
     CubeMips cube{size, {std::vector<float>(size_t(size) * size * 6 * 4)}};
     for (size_t face = 0; face < 6; ++face) {
       seen.camera.transform = Transform{.position = probe.position, .rotation = kFaceRotations[face]};
-      Result<RenderedFrame, RenderError> frame = render_scene(context, seen, face_options);
+      // The faces' renders share this render's library (RenderOptions::shaders
+      // is the Renderer's store), and so the text its errors point into.
+      SourceMap unshared;
+      SourceMap& report = shaders->library ? shaders->library->report_sources() : unshared;
+      Diagnostics face_diags;
+      Result<RenderedFrame> frame = render_scene(context, seen, face_options, report, face_diags);
       if (!frame) {
-        return unexpected(RenderError{fmt::format("{}: {}: rendering the probe's face {}: {}", scene.path,
-                                                  probe.json_path, face, frame.error().message)});
+        return unexpected(scene_error(report, scene, probe.json_path, DiagId::render_invalid,
+                                      fmt::format("rendering the probe's face {}", face), face_diags));
       }
       float* out = &cube.mips[0][face * size_t(size) * size * 4];
       for (size_t i = 0; i < size_t(size) * size * 4; ++i) out[i] = frame->hdr[i] * (i % 4 == 3 ? 1.0f : probe.intensity);

@@ -14,6 +14,7 @@
 #include "facet/runtime/renderer.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/uniforms.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -21,7 +22,7 @@ namespace facet::runtime {
 // (without its probes, image effects and tone mapping) rendered through six
 // 90-degree faces at the probe (render_scene, with `options`' shaders),
 // times the probe's intensity. Errors name "reflection_probes[i]".
-Result<std::vector<CubeMips>, RenderError> render_probes(Context& context, const Scene& scene,
+Result<std::vector<CubeMips>, Diagnostics> render_probes(Context& context, const Scene& scene,
                                                          const RenderOptions& options);
 
 // The probes an object at `centre` reflects: probe 0 and probe 1 (-1: the

@@ -52,10 +52,10 @@ constexpr std::array<Word<VkStencilOp>, 8> kStencilOps = {{{"Keep", VK_STENCIL_O
 
 struct Resolver {
   const Material& material;
-  std::optional<StateError> error;
+  std::optional<std::string> error;
 
   void fail(std::string_view command, std::string what) {
-    if (!error) error = StateError{fmt::format("{}: {}", command, what)};
+    if (!error) error = fmt::format("{}: {}", command, what);
   }
 
   std::string name_of(const ir::StateValue& v) const {
@@ -179,7 +179,7 @@ const char* factor_name(VkBlendFactor f) {
 
 }  // namespace
 
-Result<PipelineState, StateError> resolve_state(const ir::RenderState& state, const Material& material) {
+Result<PipelineState> resolve_state(const ir::RenderState& state, const Material& material, Diagnostics& diags) {
   Resolver r{material, std::nullopt};
   PipelineState out;
   if (state.cull) out.cull = r.cull(*state.cull);
@@ -214,7 +214,10 @@ Result<PipelineState, StateError> resolve_state(const ir::RenderState& state, co
     if (m.render_target <= 0) out.color_mask = r.color_mask(m.mask);
   }
   if (state.stencil) r.stencil(*state.stencil, out);
-  if (r.error) return unexpected(*r.error);
+  if (r.error) {
+    diags.add(DiagId::render_state_property, SourceSpan{}, std::move(*r.error));
+    return failure();
+  }
   return out;
 }
 

@@ -9,19 +9,17 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
+#include "facet/runtime/submission.h"
 #include "facet/runtime/vulkan_context.h"
 #include "facet/reference/color.h"
 #include "facet/reference/tonemap.h"
 #include "render/scene_frame.h"
-#include "render/submission.h"
 
 namespace facet::runtime {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -68,7 +66,7 @@ struct Renderer::State {
   Context& context;
   RendererOptions options;
   std::shared_ptr<ShaderStore> store;
-  Submitter submitter;
+  std::optional<Submission> submission;  // the frames' command buffer and fence
   std::unique_ptr<SceneFrame> frame;
   uint64_t frame_library_generation = 0;  // ShaderLibrary::forgotten_total when the frame was built
   std::vector<std::string> frame_misses;  // the variant misses of the frame's draw lists
@@ -77,20 +75,35 @@ struct Renderer::State {
 Renderer::Renderer(std::unique_ptr<State> state) : state_(std::move(state)) {}
 Renderer::~Renderer() = default;
 
-Result<std::unique_ptr<Renderer>, RenderError> Renderer::create(Context& context, RendererOptions options) {
+Result<std::unique_ptr<Renderer>> Renderer::create(Context& context, RendererOptions options, Diagnostics& diags) {
   auto state = std::make_unique<State>(context, std::move(options));
   state->store = state->options.shaders ? state->options.shaders : make_shader_store();
   ShaderStore& store = *state->store;
   if (store.context && store.context != &context) {
-    return unexpected(error("the ShaderStore holds GPU programs of another Context: give each Context its own"));
+    diags.add(DiagId::render_invalid, SourceSpan{},
+              "the ShaderStore holds GPU programs of another Context: give each Context its own");
+    return failure();
   }
   store.context = &context;
   if (!store.library) store.library = std::make_unique<ShaderLibrary>(state->options.shader_compiler);
-  FACET_TRY(state->submitter.create(context));
+  VkResultOf<Submission> submission = Submission::create(context);
+  if (!submission) {
+    diags.add(DiagId::vulkan_failed, SourceSpan{}, describe(submission.error()));
+    return failure();
+  }
+  state->submission = std::move(*submission);
   return std::unique_ptr<Renderer>(new Renderer(std::move(state)));
 }
 
-Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& out, const FrameOptions& options) {
+Result<void> Renderer::render(const Scene& scene, RenderedFrame& out, const FrameOptions& options, SourceMap& sources,
+                              Diagnostics& diags) {
+  Result<void, Diagnostics> drawn = draw(scene, out, options);
+  if (drawn) return {};
+  diags.append(rebase_diagnostics(drawn.error(), state_->store->library->report_sources(), sources));
+  return failure();
+}
+
+Result<void, Diagnostics> Renderer::draw(const Scene& scene, RenderedFrame& out, const FrameOptions& options) {
   Clock::time_point start = Clock::now();
   State& s = *state_;
   out.draws.clear();
@@ -100,13 +113,13 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   out.stats = RenderStats{};
   out.width = options.width ? options.width : scene.width;
   out.height = options.height ? options.height : scene.height;
-  if (options.frames < 1) return unexpected(error("frames must be at least 1"));
+  if (options.frames < 1) return unexpected(render_error("frames must be at least 1"));
   if (options.capture && !scene.post.empty()) {
-    return unexpected(error(scene.path + ": a frame capture does not cover image effects"));
+    return unexpected(render_error(scene.path + ": a frame capture does not cover image effects"));
   }
   if (options.target) {
     if (std::string problem = target_problem(s.context, *options.target); !problem.empty()) {
-      return unexpected(error(problem));
+      return unexpected(render_error(problem));
     }
   }
   ShaderLibrary& library = *s.store->library;
@@ -130,7 +143,7 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
              (kept->kept_scene->time = scene.time, *kept->kept_scene == scene)) {  // the kept time is redrawn anyway
     path = FramePath::repeated;
   } else if (because = update_blocker(*kept, scene, out.width, out.height); because.empty()) {
-    Result<std::string, RenderError> updated = update_frame(*kept, scene);
+    Result<std::string, Diagnostics> updated = update_frame(*kept, scene);
     if (!updated) return unexpected(updated.error());
     because = *updated;
     if (because.empty()) path = FramePath::updated;
@@ -140,9 +153,12 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     RenderOptions probe_options{.shader_compiler = s.options.shader_compiler,
                                 .strict_variants = s.options.strict_variants,
                                 .shaders = s.store};
-    Result<std::unique_ptr<SceneFrame>, RenderError> prepared = prepare_frame(
-        s.context, scene, library, {.width = out.width, .height = out.height, .capture = options.capture,
-                                    .keep_scene = !s.options.one_render, .probe_options = probe_options});
+    Result<std::unique_ptr<SceneFrame>, Diagnostics> prepared = prepare_frame(s.context, scene, library,
+                                                                              {.width = out.width,
+                                                                               .height = out.height,
+                                                                               .capture = options.capture,
+                                                                               .keep_scene = !s.options.one_render,
+                                                                               .probe_options = probe_options});
     if (!prepared) return unexpected(prepared.error());
     kept = std::move(*prepared);
   }
@@ -163,24 +179,24 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
     out.stats.grabs = 0;
     if (f > 0 || path == FramePath::repeated) refresh_frame_values(frame, scene);
     Clock::time_point submit_returned = frame_start;
-    std::optional<RenderError> failed;
+    std::optional<Diagnostics> failed;
     // Only the render that asked for it (and so prepared the frame) captures.
     const bool capturing = f == 0 && options.capture != nullptr;
-    VkResultOf<void> submitted = s.submitter.submit(
+    VkResultOf<void> submitted = s.submission->submit(
         [&](VkCommandBuffer c) {
           // After the first frame the target is in the layout the frame before left it in.
           std::optional<ImageTarget> target = options.target;
           if (target && f > 0) target->layout = target->final_layout;
           const FrameOutput output{target ? &*target : nullptr, options.read_back};
-          if (Result<void, RenderError> recorded = record_frame(frame, c, capturing, output, out.stats); !recorded) {
+          if (Result<void, Diagnostics> recorded = record_frame(frame, c, capturing, output, out.stats); !recorded) {
             failed = recorded.error();
           }
         },
-        &submit_returned);
+        {.submitted = &submit_returned});
     out.stats.frame_ms.push_back(ms_since(frame_start));
     out.stats.frame_cpu_ms.push_back(std::chrono::duration<double, std::milli>(submit_returned - frame_start).count());
     if (failed) return unexpected(*failed);
-    if (!submitted) return unexpected(error(describe(submitted.error())));
+    if (!submitted) return unexpected(render_error(describe(submitted.error()), DiagId::vulkan_failed));
     uint64_t stamps[2] = {0, 0};
     if (queries && vkGetQueryPoolResults(s.context.device(), queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
                                          VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
@@ -214,14 +230,23 @@ Result<void, RenderError> Renderer::render(const Scene& scene, RenderedFrame& ou
   return {};
 }
 
-Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options) {
-  Result<std::unique_ptr<Renderer>, RenderError> renderer = Renderer::create(
-      context, {.shader_compiler = options.shader_compiler, .strict_variants = options.strict_variants,
-                .shaders = options.shaders, .one_render = true});
-  if (!renderer) return unexpected(renderer.error());
+Result<RenderedFrame> render_scene(Context& context, const Scene& scene, const RenderOptions& options,
+                                   SourceMap& sources, Diagnostics& diags) {
+  Result<std::unique_ptr<Renderer>> renderer = Renderer::create(context,
+                                                                {.shader_compiler = options.shader_compiler,
+                                                                 .strict_variants = options.strict_variants,
+                                                                 .shaders = options.shaders,
+                                                                 .one_render = true},
+                                                                diags);
+  if (!renderer) return failure();
   RenderedFrame frame;
-  FACET_TRY((*renderer)->render(scene, frame, {.width = options.width, .height = options.height, .frames = options.frames,
-                                               .capture = options.capture, .after_frame = options.after_frame}));
+  FACET_TRY((*renderer)->render(scene, frame,
+                                {.width = options.width,
+                                 .height = options.height,
+                                 .frames = options.frames,
+                                 .capture = options.capture,
+                                 .after_frame = options.after_frame},
+                                sources, diags));
   return frame;
 }
 

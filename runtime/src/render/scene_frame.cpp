@@ -16,8 +16,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 struct Loader {
   const Context& context;
   const Scene& scene;
@@ -28,10 +26,10 @@ struct Loader {
   uint64_t& meshes_loaded;
 
   // An engine's MeshData: every index must name a vertex.
-  Result<const MeshData*, RenderError> engine_mesh(const SceneObject& object) {
+  Result<const MeshData*, Diagnostics> engine_mesh(const SceneObject& object) {
     const MeshData& data = *object.mesh_data;
     auto bad = [&](const std::string& why) {
-      return unexpected(error(fmt::format("{}: {}.mesh_data: {}", scene.path, object.json_path, why)));
+      return unexpected(render_error(fmt::format("{}: {}.mesh_data: {}", scene.path, object.json_path, why)));
     };
     if (data.vertices.empty() || data.indices.empty()) return bad("no vertices or no indices");
     if (data.indices.size() % 3 != 0) return bad(fmt::format("{} indices: not whole triangles", data.indices.size()));
@@ -44,7 +42,7 @@ struct Loader {
     return &data;
   }
 
-  Result<GpuMesh*, RenderError> mesh(const SceneObject& object) {
+  Result<GpuMesh*, Diagnostics> mesh(const SceneObject& object) {
     std::string key = object.mesh_data ? fmt::format("memory:{}", static_cast<const void*>(object.mesh_data.get()))
                       : object.gltf_material ? fmt::format("{}#{}", object.mesh, *object.gltf_material)
                                              : object.mesh;
@@ -52,26 +50,29 @@ struct Loader {
     std::optional<MeshData> loaded;
     const MeshData* data = nullptr;
     if (object.mesh_data) {
-      Result<const MeshData*, RenderError> given = engine_mesh(object);
+      Result<const MeshData*, Diagnostics> given = engine_mesh(object);
       if (!given) return unexpected(given.error());
       data = *given;
     } else {
-      MeshError mesh_error;
+      Diagnostics mesh_diags;
       if (object.builtin_mesh) {
         loaded = builtin_mesh(object.mesh);
       } else if (is_gltf_path(object.mesh)) {
-        if (std::optional<GltfModel> model = load_gltf(object.mesh, mesh_error)) {
+        if (std::optional<GltfModel> model = load_gltf(object.mesh, mesh_diags)) {
           loaded = merge_gltf_parts(*model, object.gltf_material);
         }
       } else {
-        loaded = load_obj(object.mesh, mesh_error);
+        loaded = load_obj(object.mesh, mesh_diags);
       }
       if (!loaded) {
-        return unexpected(error(fmt::format("{}: {}.mesh: {}", scene.path, object.json_path, mesh_error.message)));
+        // The loader's one error, said at the scene's value ("objects[2].mesh: a.obj:4:7: ...").
+        std::string why = mesh_diags.all().empty() ? "the mesh does not load" : mesh_diags.all()[0].message;
+        return unexpected(
+            scene_error(library.report_sources(), scene, object.json_path + ".mesh", DiagId::mesh_invalid, why));
       }
       data = &*loaded;
     }
-    Result<GpuMesh, RenderError> gpu = upload_mesh(context, *data);
+    Result<GpuMesh, Diagnostics> gpu = upload_mesh(context, *data);
     if (!gpu) return unexpected(gpu.error());
     ++meshes_loaded;
     auto& slot = meshes[key];
@@ -79,33 +80,39 @@ struct Loader {
     return slot.get();
   }
 
-  Result<void, RenderError> texel_sizes(Material& material, const SceneObject& object) {
+  Result<void, Diagnostics> texel_sizes(Material& material, const SceneObject& object) {
     for (const auto& [name, ref] : material.textures) {
       Result<const LoadedTexture*, std::string> t = resources.texture(ref);
-      if (!t) return unexpected(error(fmt::format("{}: {}.material.properties.{}: {}", scene.path, object.json_path, name, t.error())));
+      if (!t) {
+        return unexpected(scene_error(library.report_sources(), scene,
+                                      object.json_path + ".material.properties." + name, DiagId::texture_invalid,
+                                      t.error()));
+      }
       float w = float((*t)->width), h = float((*t)->height);
       material.uniforms.set_vector(name + "_TexelSize", 1 / w, 1 / h, w, h);
     }
     return {};
   }
 
-  Result<ObjectState, RenderError> object(size_t index, const CameraMatrices& camera) {
+  Result<ObjectState, Diagnostics> object(size_t index, const CameraMatrices& camera) {
     const SceneObject& o = scene.objects[index];
     ObjectState s;
     s.index = index;
     s.scene = &o;
-    Result<ShaderAsset*, std::string> shader = library.load(o.material.shader);
+    Result<ShaderAsset*, Diagnostics> shader = library.load(o.material.shader);
     if (!shader) {
-      return unexpected(error(fmt::format("{}: {}.material.shader: the shader does not compile:\n{}", scene.path,
-                                          o.json_path, shader.error())));
+      return unexpected(scene_error(library.report_sources(), scene, o.json_path + ".material.shader",
+                                    DiagId::shader_unavailable, "the shader does not compile", shader.error()));
     }
     s.shader = *shader;
-    Result<Material, MaterialError> material = make_material(s.shader->shader, o.material, scene.path);
-    if (!material) return unexpected(error(material.error().message));
+    Diagnostics material_diags;
+    Result<Material> material =
+        make_material(s.shader->shader, o.material, scene.path, library.report_sources(), material_diags);
+    if (!material) return unexpected(material_diags);
     s.material = std::move(*material);
     FACET_TRY(texel_sizes(s.material, o));
     s.queue = o.material.queue.value_or(s.shader->queue);
-    Result<GpuMesh*, RenderError> m = mesh(o);
+    Result<GpuMesh*, Diagnostics> m = mesh(o);
     if (!m) return unexpected(m.error());
     s.mesh = *m;
     s.model = transform_matrix(o.transform);
@@ -121,14 +128,14 @@ struct Loader {
 };
 
 // The objects of `frame.scene` with their materials, meshes and probes.
-Result<void, RenderError> load_objects(SceneFrame& frame) {
+Result<void, Diagnostics> load_objects(SceneFrame& frame) {
   Loader loader{frame.context,    *frame.scene,       *frame.library,
                 frame.resources,  frame.meshes,       frame.mesh_sources,
                 frame.meshes_loaded};
   frame.objects.clear();
   frame.objects.reserve(frame.scene->objects.size());
   for (size_t i = 0; i < frame.scene->objects.size(); ++i) {
-    Result<ObjectState, RenderError> o = loader.object(i, frame.camera);
+    Result<ObjectState, Diagnostics> o = loader.object(i, frame.camera);
     if (!o) return unexpected(o.error());
     if (!frame.probe_images.empty()) {
       ProbeChoice choice = choose_probes(*frame.scene, o->center);
@@ -158,7 +165,7 @@ void forget_unused_engine_meshes(SceneFrame& frame) {
 }
 
 // The lights, their shadow views, and the draw list of the loaded objects.
-Result<void, RenderError> build_lists(SceneFrame& frame) {
+Result<void, Diagnostics> build_lists(SceneFrame& frame) {
   const Scene& scene = *frame.scene;
   frame.lights = setup_lights(scene, frame.camera.view, frame.environment->ambient);
   frame.shadow_views.clear();
@@ -170,9 +177,10 @@ Result<void, RenderError> build_lists(SceneFrame& frame) {
     }
   }
   if (Result<void, std::string> cookies = frame.resources.load_cookies(scene); !cookies) {
-    return unexpected(error(cookies.error()));
+    return unexpected(render_error(cookies.error(), DiagId::texture_invalid));
   }
-  Result<DrawListResult, RenderError> list = build_draws(frame.context, scene, frame.objects, frame.lights, *frame.library);
+  Result<DrawListResult, Diagnostics> list =
+      build_draws(frame.context, scene, frame.objects, frame.lights, *frame.library);
   if (!list) return unexpected(list.error());
   frame.list = std::move(*list);
   frame.instanced_away = merge_instanced_draws(frame.list.draws, frame.objects);
@@ -180,7 +188,7 @@ Result<void, RenderError> build_lists(SceneFrame& frame) {
 }
 
 // The pipelines of `draws` in `render_pass`, one a draw.
-Result<std::vector<VkPipeline>, RenderError> pipelines_for(SceneFrame& frame, const std::vector<Draw>& draws,
+Result<std::vector<VkPipeline>, Diagnostics> pipelines_for(SceneFrame& frame, const std::vector<Draw>& draws,
                                                            const std::vector<ObjectState>& owners,
                                                            VkRenderPass render_pass, uint32_t color_targets) {
   std::vector<VkPipeline> out;
@@ -189,7 +197,7 @@ Result<std::vector<VkPipeline>, RenderError> pipelines_for(SceneFrame& frame, co
     bool created = false;
     Result<VkPipeline, std::string> p = get_pipeline(frame.context, *d.variant->program, d.state, owners[d.object].mirrored,
                                                      render_pass, frame.pipeline_cache, &created, color_targets);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", frame.scene->path, d.record.object, p.error())));
+    if (!p) return unexpected(render_error(fmt::format("{}: {}: {}", frame.scene->path, d.record.object, p.error())));
     out.push_back(*p);
     frame.pipelines_created += created;
   }
@@ -264,7 +272,7 @@ SceneFrame::~SceneFrame() {
   if (pipeline_cache) vkDestroyPipelineCache(context.device(), pipeline_cache, nullptr);
 }
 
-Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context, const Scene& scene_in,
+Result<std::unique_ptr<SceneFrame>, Diagnostics> prepare_frame(Context& context, const Scene& scene_in,
                                                                ShaderLibrary& library, const FrameSetup& setup) {
   auto owned = std::make_unique<SceneFrame>(context);
   SceneFrame& frame = *owned;
@@ -278,7 +286,7 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
   // frame takes the shader library.
   std::vector<CubeMips> probe_cubes;
   if (!scene.reflection_probes.empty()) {
-    Result<std::vector<CubeMips>, RenderError> cubes = render_probes(context, scene, setup.probe_options);
+    Result<std::vector<CubeMips>, Diagnostics> cubes = render_probes(context, scene, setup.probe_options);
     if (!cubes) return unexpected(cubes.error());
     probe_cubes = std::move(*cubes);
   }
@@ -286,21 +294,24 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
   frame.resources.keep_pixels(setup.capture != nullptr);
   frame.camera = camera_matrices(scene.camera, frame.width, frame.height);
   Result<EnvironmentLighting, std::string> environment = environment_lighting(scene);
-  if (!environment) return unexpected(error(environment.error()));
+  if (!environment) return unexpected(render_error(environment.error()));
   frame.environment = std::move(*environment);
   if (Result<const Image*, std::string> cube = frame.resources.environment_cube(frame.environment->cube); !cube) {
-    return unexpected(error("cannot create the environment cube: " + cube.error()));
+    return unexpected(render_error("cannot create the environment cube: " + cube.error(), DiagId::vulkan_failed));
   }
   frame.frame_values = frame_uniforms(scene, frame.camera, frame.width, frame.height, frame.environment->ambient);
   for (const CubeMips& cube : probe_cubes) {
     Result<const Image*, std::string> image = frame.resources.add_probe(cube);
-    if (!image) return unexpected(error("cannot create a reflection probe's cube: " + image.error()));
+    if (!image) {
+      return unexpected(
+          render_error("cannot create a reflection probe's cube: " + image.error(), DiagId::vulkan_failed));
+    }
     frame.probe_images.push_back(*image);
   }
   FACET_TRY(load_objects(frame));
   FACET_TRY(build_lists(frame));
   if (!scene.post.empty() || scene.camera.clear_sky) {
-    Result<GpuMesh, RenderError> q = upload_mesh(context, *builtin_mesh("quad"));
+    Result<GpuMesh, Diagnostics> q = upload_mesh(context, *builtin_mesh("quad"));
     if (!q) return unexpected(q.error());
     frame.quad = std::make_unique<GpuMesh>(std::move(*q));
   }
@@ -349,9 +360,10 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
   VkPipelineCacheCreateInfo cache_info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
   if (VkResult r = vkCreatePipelineCache(context.device(), &cache_info, nullptr, &frame.pipeline_cache); r != VK_SUCCESS) {
     frame.pipeline_cache = VK_NULL_HANDLE;  // undefined after a failure; the destructor destroys what is not null
-    return unexpected(error(fmt::format("cannot create the pipeline cache (VkResult {})", int(r))));
+    return unexpected(
+        render_error(fmt::format("cannot create the pipeline cache (VkResult {})", int(r)), DiagId::vulkan_failed));
   }
-  Result<std::vector<VkPipeline>, RenderError> made =
+  Result<std::vector<VkPipeline>, Diagnostics> made =
       pipelines_for(frame, frame.list.draws, frame.objects, frame.targets.render_pass, 1);
   if (!made) return unexpected(made.error());
   frame.pipelines = std::move(*made);
@@ -363,18 +375,18 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
     if (!made) return unexpected(made.error());
     frame.light_pipelines = std::move(*made);
   }
-  Result<GrabPlan, RenderError> grab_plan =
+  Result<GrabPlan, Diagnostics> grab_plan =
       plan_grabs(context, scene, frame.list.draws, uint32_t(frame.width), uint32_t(frame.height));
   if (!grab_plan) return unexpected(grab_plan.error());
   frame.grabs = std::move(*grab_plan);
   if (!frame.grabs.points.empty()) {
-    if (setup.capture) return unexpected(error(scene.path + ": a frame capture does not cover GrabPass"));
+    if (setup.capture) return unexpected(render_error(scene.path + ": a frame capture does not cover GrabPass"));
     PassEnds first{.load = frame.deferred != nullptr, .to_grab = true}, middle{.load = true, .to_grab = true},
         last = last_part;
     last.load = true;
     for (auto [ends, out] : {std::pair{first, &frame.targets.first_part}, {middle, &frame.targets.middle_part},
                              {last, &frame.targets.last_part}}) {
-      Result<VkRenderPass, RenderError> part = make_render_pass(context.device(), frame.targets.depth_format, ends);
+      Result<VkRenderPass, Diagnostics> part = make_render_pass(context.device(), frame.targets.depth_format, ends);
       if (!part) return unexpected(part.error());
       *out = *part;
     }
@@ -400,7 +412,8 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
                                    uint32_t(frame.height), frame.pipeline_cache, frame.screen_shadows,
                                    frame.pipelines_created));
   if (setup.capture && !frame.shadows.maps.empty()) {
-    return unexpected(error(scene.path + ": a frame capture does not cover shadow maps or the camera depth texture"));
+    return unexpected(
+        render_error(scene.path + ": a frame capture does not cover shadow maps or the camera depth texture"));
   }
   if (frame.post) {
     made = pipelines_for(frame, frame.post->list.draws, frame.post->steps, frame.post_targets.render_pass, 1);
@@ -412,7 +425,7 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
   frame.binder.screen_shadows = &frame.screen_shadows;
   if (!frame.shadows.maps.empty() || frame.deferred) {
     Result<VkSampler, std::string> sampler = frame.resources.point_sampler();
-    if (!sampler) return unexpected(error(sampler.error()));
+    if (!sampler) return unexpected(render_error(sampler.error()));
     frame.binder.point_sampler = *sampler;
   }
   if (setup.capture) {
@@ -426,7 +439,7 @@ Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context,
   }
   VkResultOf<Buffer> readback = create_buffer(context, VkDeviceSize(frame.width) * frame.height * 8,
                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  if (!readback) return unexpected(error(describe(readback.error())));
+  if (!readback) return unexpected(render_error(describe(readback.error()), DiagId::vulkan_failed));
   frame.readback = std::move(*readback);
   return owned;
 }
@@ -461,7 +474,7 @@ std::string update_blocker(const SceneFrame& frame, const Scene& scene, int widt
   return "";
 }
 
-Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& scene) {
+Result<std::string, Diagnostics> update_frame(SceneFrame& frame, const Scene& scene) {
   frame.kept_scene = scene;
   frame.scene = &*frame.kept_scene;
   frame.binder.restart();
@@ -475,7 +488,7 @@ Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& sc
   forget_unused_engine_meshes(frame);
   FACET_TRY(build_lists(frame));
   if (std::string blocker = pass_blocker(frame); !blocker.empty()) return blocker;
-  Result<std::vector<VkPipeline>, RenderError> made =
+  Result<std::vector<VkPipeline>, Diagnostics> made =
       pipelines_for(frame, frame.list.draws, frame.objects, frame.targets.render_pass, 1);
   if (!made) return unexpected(made.error());
   frame.pipelines = std::move(*made);
@@ -487,7 +500,7 @@ void refresh_frame_values(SceneFrame& frame, const Scene& scene) {
   frame.frame_values.assign(per_frame_uniforms(scene, frame.camera, frame.width, frame.height));
 }
 
-Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
+Result<void, Diagnostics> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
                                        const FrameOutput& output, RenderStats& stats) {
   // The frame's parts under the names the recording uses.
   std::vector<ObjectState>& objects = frame.objects;
@@ -510,7 +523,7 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
   const Buffer* readback = &*frame.readback;
   const bool depth_sampled = frame.depth_sampled;
   VkQueryPool queries = frame.context.timestamp_pool();
-  std::optional<RenderError> failed;
+  std::optional<Diagnostics> failed;
   frame.binder.refresh();
   if (queries) {
     vkCmdResetQueryPool(commands, queries, 0, 2);
@@ -518,7 +531,7 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
   }
   glm::vec3 clear = linear_color({frame.scene->camera.clear_color[0], frame.scene->camera.clear_color[1], frame.scene->camera.clear_color[2]});
   if (capturing) frame.capture_out->clear_color = {clear.r, clear.g, clear.b, frame.scene->camera.clear_color[3]};
-  Result<uint64_t, RenderError> shadow_triangles = record_shadow_maps(
+  Result<uint64_t, Diagnostics> shadow_triangles = record_shadow_maps(
       commands, frame.shadows, frame.objects,
       [&](VkCommandBuffer c, const Draw& d, const UniformValues& light_frame) {
         return frame.binder.bind(c, d, frame.objects[d.object], light_frame);
@@ -550,7 +563,7 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
       const Draw& d = draws[i];
       const ObjectState& object = owners[d.object];
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipelines[i]);
-      if (Result<void, RenderError> bound = frame.binder.bind(commands, d, object, frame_values); !bound) {
+      if (Result<void, Diagnostics> bound = frame.binder.bind(commands, d, object, frame_values); !bound) {
         failed = bound.error();
         break;
       }
@@ -641,7 +654,8 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
       captured = CapturedDraw{frame.capture->program(*d.variant->program), frame.capture->mesh(*object.mesh), d.state, object.mirrored};
       frame.binder.capture = &*frame.capture;
     }
-    if (Result<void, RenderError> bound = frame.binder.bind(commands, d, object, frame_values, captured ? &*captured : nullptr);
+    if (Result<void, Diagnostics> bound =
+            frame.binder.bind(commands, d, object, frame_values, captured ? &*captured : nullptr);
         !bound) {
       failed = bound.error();
       break;
@@ -668,7 +682,8 @@ Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer comman
     if (depth_sampled) frame.binder.overrides["_CameraDepthTexture"] = &*depth_image;
     frame.binder.point_sampler = targets.point_sampler;
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, post_pipelines[i]);
-    if (Result<void, RenderError> bound = frame.binder.bind(commands, post->list.draws[i], post->steps[i], frame_values);
+    if (Result<void, Diagnostics> bound =
+            frame.binder.bind(commands, post->list.draws[i], post->steps[i], frame_values);
         !bound) {
       failed = bound.error();
     } else {

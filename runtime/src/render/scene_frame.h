@@ -24,6 +24,7 @@
 #include "render/scene_targets.h"
 #include "render/screen_shadows.h"
 #include "render/shadow_pass.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -86,7 +87,7 @@ struct SceneFrame {
 
 // Loads, builds and creates everything the frame draws. `library` must
 // outlive the frame.
-Result<std::unique_ptr<SceneFrame>, RenderError> prepare_frame(Context& context, const Scene& scene,
+Result<std::unique_ptr<SceneFrame>, Diagnostics> prepare_frame(Context& context, const Scene& scene,
                                                                ShaderLibrary& library, const FrameSetup& setup);
 
 // Why `scene` cannot be drawn by updating `frame` in place (empty: it can):
@@ -100,7 +101,7 @@ std::string update_blocker(const SceneFrame& frame, const Scene& scene, int widt
 // not seen. Returns why it could not after all (the new draws need a pass
 // the frame was not prepared with; the frame must then be prepared anew),
 // or "".
-Result<std::string, RenderError> update_frame(SceneFrame& frame, const Scene& scene);
+Result<std::string, Diagnostics> update_frame(SceneFrame& frame, const Scene& scene);
 
 // The camera and time values of the frame, recomputed from `scene` (whose
 // only difference from the frame's scene is its time).
@@ -114,7 +115,7 @@ struct FrameOutput {
 
 // Records one frame: shadow maps, the scene, image effects, the copies of
 // `output`. `capturing`: fill the capture (the first frame after preparing).
-Result<void, RenderError> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
+Result<void, Diagnostics> record_frame(SceneFrame& frame, VkCommandBuffer commands, bool capturing,
                                        const FrameOutput& output, RenderStats& stats);
 
 // Why `target` cannot receive frames on `context` ("" when it can).

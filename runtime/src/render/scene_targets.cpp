@@ -8,8 +8,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 }  // namespace
 
 SceneTargets::~SceneTargets() {
@@ -29,7 +27,7 @@ VkFormat depth_format(const Context& context, bool sampled) {
   return (p.optimalTilingFeatures & needs) == needs ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D32_SFLOAT;
 }
 
-Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth, const PassEnds& ends) {
+Result<VkRenderPass, Diagnostics> make_render_pass(VkDevice device, VkFormat depth, const PassEnds& ends) {
   VkAttachmentDescription attachments[2]{};
   attachments[0].format = VK_FORMAT_R16G16B16A16_SFLOAT;
   attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
@@ -72,13 +70,12 @@ Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat dep
   info.pDependencies = &after;
   VkRenderPass pass = VK_NULL_HANDLE;
   if (VkResult r = vkCreateRenderPass(device, &info, nullptr, &pass); r != VK_SUCCESS) {
-    return unexpected(error("cannot create the render pass: " + vk_result_name(r)));
+    return unexpected(render_error("cannot create the render pass: " + vk_result_name(r), DiagId::vulkan_failed));
   }
   return pass;
 }
 
-
-Result<void, RenderError> make_scene_targets(const Context& context, uint32_t width, uint32_t height, bool post,
+Result<void, Diagnostics> make_scene_targets(const Context& context, uint32_t width, uint32_t height, bool post,
                                              bool depth_readable, const PassEnds& last_part, SceneTargets& out) {
   out.device = context.device();
   out.depth_format = depth_format(context, depth_readable);
@@ -86,25 +83,25 @@ Result<void, RenderError> make_scene_targets(const Context& context, uint32_t wi
                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                                             (post ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
-  if (!color) return unexpected(error(describe(color.error())));
+  if (!color) return unexpected(render_error(describe(color.error()), DiagId::vulkan_failed));
   out.color = std::move(*color);
   VkResultOf<Image> depth = create_image(context, {.width = width, .height = height,
                                                    .format = out.depth_format,
                                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                                             (depth_readable ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
-  if (!depth) return unexpected(error(describe(depth.error())));
+  if (!depth) return unexpected(render_error(describe(depth.error()), DiagId::vulkan_failed));
   out.depth = std::move(*depth);
-  Result<VkRenderPass, RenderError> pass = make_render_pass(context.device(), out.depth_format, last_part);
+  Result<VkRenderPass, Diagnostics> pass = make_render_pass(context.device(), out.depth_format, last_part);
   if (!pass) return unexpected(pass.error());
   out.render_pass = *pass;
-  Result<VkFramebuffer, RenderError> framebuffer =
+  Result<VkFramebuffer, Diagnostics> framebuffer =
       make_framebuffer(context.device(), out.render_pass, {out.color.view(), out.depth.view()}, width, height);
   if (!framebuffer) return unexpected(framebuffer.error());
   out.framebuffer = *framebuffer;
   return {};
 }
 
-Result<void, RenderError> make_post_targets(const Context& context, PostTargets& t, int width, int height) {
+Result<void, Diagnostics> make_post_targets(const Context& context, PostTargets& t, int width, int height) {
   t.device = context.device();
   VkAttachmentDescription a{};
   a.format = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -144,7 +141,8 @@ Result<void, RenderError> make_post_targets(const Context& context, PostTargets&
   info.pDependencies = deps;
   if (VkResult r = vkCreateRenderPass(t.device, &info, nullptr, &t.render_pass); r != VK_SUCCESS) {
     t.render_pass = VK_NULL_HANDLE;
-    return unexpected(error("cannot create the image-effect render pass: " + vk_result_name(r)));
+    return unexpected(
+        render_error("cannot create the image-effect render pass: " + vk_result_name(r), DiagId::vulkan_failed));
   }
   VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
@@ -152,14 +150,15 @@ Result<void, RenderError> make_post_targets(const Context& context, PostTargets&
   sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   if (VkResult r = vkCreateSampler(t.device, &sampler, nullptr, &t.point_sampler); r != VK_SUCCESS) {
     t.point_sampler = VK_NULL_HANDLE;
-    return unexpected(error("cannot create the depth texture's sampler: " + vk_result_name(r)));
+    return unexpected(
+        render_error("cannot create the depth texture's sampler: " + vk_result_name(r), DiagId::vulkan_failed));
   }
   for (size_t i = 0; i < 2; ++i) {
     VkResultOf<Image> image = create_image(context, {.width = uint32_t(width), .height = uint32_t(height),
                                                      .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                                                      .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                                               VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
-    if (!image) return unexpected(error(describe(image.error())));
+    if (!image) return unexpected(render_error(describe(image.error()), DiagId::vulkan_failed));
     t.images[i] = std::move(*image);
     VkImageView view = t.images[i].view();
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
@@ -171,7 +170,8 @@ Result<void, RenderError> make_post_targets(const Context& context, PostTargets&
     fb.layers = 1;
     if (VkResult r = vkCreateFramebuffer(t.device, &fb, nullptr, &t.framebuffers[i]); r != VK_SUCCESS) {
       t.framebuffers[i] = VK_NULL_HANDLE;
-      return unexpected(error("cannot create an image-effect framebuffer: " + vk_result_name(r)));
+      return unexpected(
+          render_error("cannot create an image-effect framebuffer: " + vk_result_name(r), DiagId::vulkan_failed));
     }
   }
   return {};

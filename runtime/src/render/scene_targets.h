@@ -10,6 +10,7 @@
 
 #include "facet/runtime/image.h"
 #include "facet/runtime/renderer.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -48,12 +49,12 @@ struct PassEnds {
   bool depth_sampled = false;
 };
 
-Result<VkRenderPass, RenderError> make_render_pass(VkDevice device, VkFormat depth, const PassEnds& ends);
+Result<VkRenderPass, Diagnostics> make_render_pass(VkDevice device, VkFormat depth, const PassEnds& ends);
 
 // The colour and depth images (`post`: the colour is sampled by the chain;
 // `depth_readable`: the depth is sampled), the last part's render pass and
 // the framebuffer.
-Result<void, RenderError> make_scene_targets(const Context& context, uint32_t width, uint32_t height, bool post,
+Result<void, Diagnostics> make_scene_targets(const Context& context, uint32_t width, uint32_t height, bool post,
                                              bool depth_readable, const PassEnds& last_part, SceneTargets& out);
 
 // The image-effect chain's two ping-pong images, its colour-only render pass
@@ -77,6 +78,6 @@ struct PostTargets {
   }
 };
 
-Result<void, RenderError> make_post_targets(const Context& context, PostTargets& t, int width, int height);
+Result<void, Diagnostics> make_post_targets(const Context& context, PostTargets& t, int width, int height);
 
 }  // namespace facet::runtime

@@ -12,8 +12,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 }  // namespace
 
 ScreenShadows::~ScreenShadows() {
@@ -52,7 +50,7 @@ std::vector<const LightValues*> screen_shadowed_lights(const std::vector<const s
   return lights;
 }
 
-Result<void, RenderError> prepare_screen_shadows(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> prepare_screen_shadows(const Context& context, const Scene& scene, ShaderLibrary& library,
                                                  const CameraMatrices& camera,
                                                  const std::vector<const LightValues*>& lights, uint32_t width,
                                                  uint32_t height, VkPipelineCache cache, ScreenShadows& out,
@@ -64,10 +62,9 @@ Result<void, RenderError> prepare_screen_shadows(const Context& context, const S
   ObjectState& object = out.screen.objects.back();
 
   constexpr VkFormat kMask = VK_FORMAT_R8_UNORM;
-  Result<VkRenderPass, RenderError> pass = make_single_pass(
-      out.device,
-      {attachment(kMask, false, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)}, false,
-      "screen-space shadow");
+  Result<VkRenderPass, Diagnostics> pass = make_single_pass(
+      out.device, {attachment(kMask, false, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)},
+      false, "screen-space shadow");
   if (!pass) return unexpected(pass.error());
   out.render_pass = *pass;
   for (const LightValues* light : lights) {
@@ -83,9 +80,9 @@ Result<void, RenderError> prepare_screen_shadows(const Context& context, const S
     VkResultOf<Image> mask =
         create_image(context, {.width = width, .height = height, .format = kMask,
                                .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
-    if (!mask) return unexpected(error(describe(mask.error())));
+    if (!mask) return unexpected(render_error(describe(mask.error()), DiagId::vulkan_failed));
     out.masks.push_back(std::move(*mask));
-    Result<VkFramebuffer, RenderError> fb =
+    Result<VkFramebuffer, Diagnostics> fb =
         make_framebuffer(out.device, out.render_pass, {out.masks.back().view()}, width, height);
     if (!fb) return unexpected(fb.error());
     out.framebuffers.push_back(*fb);
@@ -93,7 +90,7 @@ Result<void, RenderError> prepare_screen_shadows(const Context& context, const S
     bool created = false;
     Result<VkPipeline, std::string> p =
         get_pipeline(context, *d.variant->program, d.state, false, out.render_pass, cache, &created);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+    if (!p) return unexpected(render_error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
     out.pipelines.push_back(*p);
     pipelines_created += created;
   }

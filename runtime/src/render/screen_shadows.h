@@ -18,6 +18,7 @@
 #include "facet/runtime/image.h"
 #include "render/draw_list.h"
 #include "render/targets.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -46,7 +47,7 @@ std::vector<const LightValues*> screen_shadowed_lights(const std::vector<const s
 
 // A mask and its draw for each of `lights` (their shadow maps and the camera
 // depth texture are made before it), with the pipelines.
-Result<void, RenderError> prepare_screen_shadows(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> prepare_screen_shadows(const Context& context, const Scene& scene, ShaderLibrary& library,
                                                  const CameraMatrices& camera,
                                                  const std::vector<const LightValues*>& lights, uint32_t width,
                                                  uint32_t height, VkPipelineCache cache, ScreenShadows& out,

@@ -51,7 +51,7 @@ void adopt_package(ShaderAsset& asset, package::Package pkg) {
 
 }  // namespace
 
-Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
+Result<ShaderAsset*, Diagnostics> ShaderLibrary::load(const std::string& path) {
   used_.insert(path);
   if (auto it = shaders_.find(path); it != shaders_.end()) return it->second.get();
   Timer timer{seconds_};
@@ -62,20 +62,22 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   Diagnostics diags;
   if (is_package_path(path)) {
     Result<package::Package> pkg = read_package_file(path, diags);
-    if (!pkg) return unexpected(render_text(diags, asset->sources));
+    if (!pkg) return unexpected(rebase_diagnostics(diags, asset->sources, report_));
     adopt_package(*asset, std::move(*pkg));
     ShaderAsset* raw = asset.get();
     shaders_[path] = std::move(asset);
     return raw;
   }
   if (!compiler_ || !compiler_->load || !compiler_->compile) {
-    return unexpected(fmt::format("{}: a .shader needs the development layer (facet_shader_compiler) to compile its "
-                                  "variants; this renderer draws packages only: build it with `facetc {} -o NAME.facetpkg` "
-                                  "and name the package in the scene",
-                                  path, path));
+    return unexpected(render_error(
+        fmt::format("{}: a .shader needs the development layer (facet_shader_compiler) to compile its variants; this "
+                    "renderer draws packages only: build it with `facetc {} -o NAME.facetpkg` and name the package in "
+                    "the scene",
+                    path, path),
+        DiagId::shader_unavailable));
   }
-  Result<ShaderSource, std::string> source = compiler_->load(path);
-  if (!source) return unexpected(source.error());
+  Result<ShaderSource> source = compiler_->load(path, report_, diags);
+  if (!source) return unexpected(diags);
   asset->sources = std::move(source->sources);
   asset->shader = std::move(source->shader);
   asset->passes = std::move(source->passes);
@@ -85,19 +87,25 @@ Result<ShaderAsset*, std::string> ShaderLibrary::load(const std::string& path) {
   return raw;
 }
 
-Result<ShaderAsset*, std::string> ShaderLibrary::load_built_in(const std::string& file) {
+Result<ShaderAsset*, Diagnostics> ShaderLibrary::load_built_in(const std::string& file) {
   if (compiler_ && compiler_->load && !compiler_->stdlib_dir.empty()) return load(compiler_->stdlib_dir + "/Shaders/" + file);
   const std::string key = "<built-in>/" + file;
   used_.insert(key);
   if (auto it = shaders_.find(key); it != shaders_.end()) return it->second.get();
   std::span<const uint8_t> bytes = built_in_package(file);
-  if (bytes.empty()) return unexpected(fmt::format("{} is not one of the renderer's built-in shaders", file));
+  if (bytes.empty()) {
+    return unexpected(render_error(fmt::format("{} is not one of the renderer's built-in shaders", file),
+                                   DiagId::shader_unavailable));
+  }
   Timer timer{seconds_};
   auto asset = std::make_unique<ShaderAsset>();
   asset->path = key;
   Diagnostics diags;
   Result<package::Package> pkg = package::read_package(bytes, diags);
-  if (!pkg) return unexpected(key + ": " + render_text(diags, asset->sources));
+  if (!pkg) {
+    return unexpected(render_error_in(key + ": the built-in package does not read", DiagId::shader_unavailable,
+                                      rebase_diagnostics(diags, asset->sources, report_)));
+  }
   ++loads_;
   adopt_package(*asset, std::move(*pkg));
   ShaderAsset* raw = asset.get();
@@ -147,13 +155,13 @@ std::vector<std::string> ShaderLibrary::files_read() const {
   return {all.begin(), all.end()};
 }
 
-Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
-                                                             const variants::VariantKey& key, bool* compiled) {
+Result<LoadedVariant*, Diagnostics> ShaderLibrary::variant(const Context& context, ShaderAsset& asset, size_t pass,
+                                                           const variants::VariantKey& key, bool* compiled) {
   auto id = std::make_pair(pass, key);
   *compiled = false;
   if (auto it = asset.variants.find(id); it != asset.variants.end()) return it->second.get();
   Timer timer{seconds_};
-  Result<std::unique_ptr<LoadedVariant>, std::string> variant =
+  Result<std::unique_ptr<LoadedVariant>, Diagnostics> variant =
       asset.package ? packaged_variant(context, asset, pass, key, compiled)
                     : compiled_variant(context, asset, asset.shader, asset.sources, asset.passes[pass].pass,
                                        variants::all_keywords(asset.passes[pass].keywords, key), compiled);
@@ -163,32 +171,39 @@ Result<LoadedVariant*, std::string> ShaderLibrary::variant(const Context& contex
   return raw;
 }
 
-Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::compiled_variant(
+Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::compiled_variant(
     const Context& context, ShaderAsset& asset, const ir::Shader& shader, SourceMap& sources, size_t selected_pass,
     const std::vector<std::string>& keywords, bool* compiled) {
   if (!compiler_ || !compiler_->compile) {
-    return unexpected(fmt::format("{}: pass {}: compiling a variant needs the development layer "
-                                  "(RenderOptions::shader_compiler), which this render was not given",
-                                  asset.path, selected_pass));
+    return unexpected(render_error(fmt::format("{}: pass {}: compiling a variant needs the development layer "
+                                               "(RenderOptions::shader_compiler), which this render was not given",
+                                               asset.path, selected_pass),
+                                   DiagId::shader_unavailable));
   }
-  Result<CompiledPassVariant, std::string> out = compiler_->compile(shader, sources, selected_pass, keywords);
-  if (!out) return unexpected(out.error());
+  Diagnostics diags;
+  Result<CompiledPassVariant> out = compiler_->compile(shader, sources, selected_pass, keywords, diags);
+  if (!out) return unexpected(rebase_diagnostics(diags, sources, report_));
   for (const std::string& file : out->files_read) note_read(asset, file);
   auto variant = std::make_unique<LoadedVariant>();
   variant->package = std::move(out->package);
   if (variant->package.passes.size() != 1 || variant->package.passes[0].variants.size() != 1) {
-    return unexpected(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected_pass));
+    return unexpected(
+        render_error(fmt::format("{}: compiling pass {} gave no single variant", asset.path, selected_pass),
+                     DiagId::shader_unavailable));
   }
   const package::PackageVariant& v = variant->package.passes[0].variants[0];
   variant->keywords = v.keywords;
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, variant->package, v);
-  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, selected_pass, program.error()));
+  if (!program) {
+    return unexpected(render_error(fmt::format("{}: pass {}: {}", asset.path, selected_pass, program.error()),
+                                   DiagId::vulkan_failed));
+  }
   variant->program = std::move(*program);
   *compiled = true;
   return variant;
 }
 
-Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::packaged_variant(const Context& context,
+Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::packaged_variant(const Context& context,
                                                                                     ShaderAsset& asset, size_t pass,
                                                                                     const variants::VariantKey& key,
                                                                                     bool* compiled) {
@@ -198,7 +213,10 @@ Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::packaged_vari
   auto variant = std::make_unique<LoadedVariant>();
   variant->keywords = found->keywords;
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, *asset.package, *found);
-  if (!program) return unexpected(fmt::format("{}: pass {}: {}", asset.path, pass, program.error()));
+  if (!program) {
+    return unexpected(
+        render_error(fmt::format("{}: pass {}: {}", asset.path, pass, program.error()), DiagId::vulkan_failed));
+  }
   variant->program = std::move(*program);
   return variant;  // built offline: *compiled stays false
 }
@@ -216,12 +234,16 @@ const std::string* ShaderLibrary::on_demand_source(ShaderAsset& asset, std::stri
     std::optional<std::string> path = compiler_->find(asset.shader.name);
     if (!path) {
       asset.origin_missing = fmt::format("no .shader in the shader folders declares '{}'", asset.shader.name);
-    } else if (Result<ShaderSource, std::string> source = compiler_->load(*path); !source) {
-      asset.origin_missing = fmt::format("{} declares '{}' but does not load:\n{}", *path, asset.shader.name,
-                                         source.error());
     } else {
-      note_read(asset, *path);
-      asset.origin = ShaderAsset::Origin{*path, std::move(*source)};
+      Diagnostics diags;
+      Result<ShaderSource> source = compiler_->load(*path, report_, diags);
+      if (!source) {
+        asset.origin_missing = fmt::format("{} declares '{}' but does not load:\n{}", *path, asset.shader.name,
+                                           render_text(diags, report_));
+      } else {
+        note_read(asset, *path);
+        asset.origin = ShaderAsset::Origin{*path, std::move(*source)};
+      }
     }
   }
   if (!asset.origin) {
@@ -231,15 +253,16 @@ const std::string* ShaderLibrary::on_demand_source(ShaderAsset& asset, std::stri
   return &asset.origin->path;
 }
 
-Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::on_demand_variant(const Context& context,
+Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::on_demand_variant(const Context& context,
                                                                                      ShaderAsset& asset, size_t pass,
                                                                                      const variants::VariantKey& key,
                                                                                      bool* compiled) {
   const package::PackagePass& built = asset.package->passes[pass];
   std::vector<std::string> keywords = variants::all_keywords(built.keywords, key);
   if (!asset.origin) {
-    return unexpected(fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass,
-                                  fmt::join(keywords, " ")));
+    return unexpected(render_error(
+        fmt::format("{}: pass {}: the package has no variant {{{}}}", asset.path, pass, fmt::join(keywords, " ")),
+        DiagId::variant_missing));
   }
   // The package's pass in the .shader: of the passes with its name and
   // LightMode (several unnamed passes are common), the one at the same rank.
@@ -253,20 +276,23 @@ Result<std::unique_ptr<LoadedVariant>, std::string> ShaderLibrary::on_demand_var
     if (same(from->ir) && seen++ == rank) break;
   }
   if (from == source.passes.end()) {
-    return unexpected(fmt::format("{}: pass {}: {} has no pass named '{}' with LightMode '{}': it is not the shader "
-                                  "the package was built from",
-                                  asset.path, pass, asset.origin->path, built.name, light_mode));
+    return unexpected(render_error(fmt::format("{}: pass {}: {} has no pass named '{}' with LightMode '{}': it is not "
+                                               "the shader the package was built from",
+                                               asset.path, pass, asset.origin->path, built.name, light_mode),
+                                   DiagId::shader_unavailable));
   }
-  Result<std::unique_ptr<LoadedVariant>, std::string> variant =
+  Result<std::unique_ptr<LoadedVariant>, Diagnostics> variant =
       compiled_variant(context, asset, source.shader, source.sources, from->pass, keywords, compiled);
   if (!variant) return unexpected(variant.error());
   std::vector<std::string> got = (*variant)->keywords, asked = keywords;
   std::sort(got.begin(), got.end());
   std::sort(asked.begin(), asked.end());
   if (got != asked) {
-    return unexpected(fmt::format("{}: pass {}: {} compiles {{{}}} for the keywords {{{}}}: it is not the shader the "
-                                  "package was built from",
-                                  asset.path, pass, asset.origin->path, fmt::join(got, " "), fmt::join(asked, " ")));
+    return unexpected(
+        render_error(fmt::format("{}: pass {}: {} compiles {{{}}} for the keywords {{{}}}: it is not "
+                                 "the shader the package was built from",
+                                 asset.path, pass, asset.origin->path, fmt::join(got, " "), fmt::join(asked, " ")),
+                     DiagId::shader_unavailable));
   }
   return variant;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "facet/runtime/shader_compiler.h"
+#include "render/failure.h"
 #include "render/program.h"
 
 namespace facet::runtime {
@@ -70,21 +71,26 @@ class ShaderLibrary {
   explicit ShaderLibrary(std::shared_ptr<const ShaderCompiler> compiler) : compiler_(std::move(compiler)) {}
 
   // A .facetpkg built by facetc, or a .shader through the ShaderCompiler.
-  // Errors are the compiler's or the package reader's diagnostics, as text.
-  Result<ShaderAsset*, std::string> load(const std::string& path);
+  // Errors are the compiler's or the package reader's diagnostics, located
+  // in report_sources().
+  Result<ShaderAsset*, Diagnostics> load(const std::string& path);
   // The stdlib's Shaders/<file>, which the renderer draws by itself: its
   // .shader through the development layer (an edited stdlib shows), else the
   // package built into facet_render (built_in_shaders.h).
-  Result<ShaderAsset*, std::string> load_built_in(const std::string& file);
+  Result<ShaderAsset*, Diagnostics> load_built_in(const std::string& file);
   // The variant of pass `pass` (an index into asset.passes) with this key,
   // compiled and on the GPU; `*compiled` says whether this call compiled it.
-  Result<LoadedVariant*, std::string> variant(const Context& context, ShaderAsset& asset, size_t pass,
-                                                const variants::VariantKey& key, bool* compiled);
+  Result<LoadedVariant*, Diagnostics> variant(const Context& context, ShaderAsset& asset, size_t pass,
+                                              const variants::VariantKey& key, bool* compiled);
   // For a package without a variant a draw asks for: the .shader it was
   // built from, whose variants `variant` then compiles on demand. Null when
   // the package's variants are all there is: no development layer, strict
   // selection, or no .shader found for it (then `why` says so).
   const std::string* on_demand_source(ShaderAsset& asset, std::string& why);
+  // The text the diagnostics of this library's failures point into: the
+  // files of a shader that did not load or compile, a scene file a material
+  // error is located in. Grows by the files of failures only.
+  SourceMap& report_sources() { return report_; }
   // The development layer, or null when only packages are drawn.
   const ShaderCompiler* compiler() const { return compiler_.get(); }
   void set_compiler(std::shared_ptr<const ShaderCompiler> compiler) { compiler_ = std::move(compiler); }
@@ -120,13 +126,13 @@ class ShaderLibrary {
   const std::vector<std::string>& misses() const { return misses_; }
 
  private:
-  Result<std::unique_ptr<LoadedVariant>, std::string> packaged_variant(const Context& context, ShaderAsset& asset,
+  Result<std::unique_ptr<LoadedVariant>, Diagnostics> packaged_variant(const Context& context, ShaderAsset& asset,
                                                                        size_t pass, const variants::VariantKey& key,
                                                                        bool* compiled);
-  Result<std::unique_ptr<LoadedVariant>, std::string> on_demand_variant(const Context& context, ShaderAsset& asset,
+  Result<std::unique_ptr<LoadedVariant>, Diagnostics> on_demand_variant(const Context& context, ShaderAsset& asset,
                                                                         size_t pass, const variants::VariantKey& key,
                                                                         bool* compiled);
-  Result<std::unique_ptr<LoadedVariant>, std::string> compiled_variant(const Context& context, ShaderAsset& asset,
+  Result<std::unique_ptr<LoadedVariant>, Diagnostics> compiled_variant(const Context& context, ShaderAsset& asset,
                                                                        const ir::Shader& shader, SourceMap& sources,
                                                                        size_t selected_pass,
                                                                        const std::vector<std::string>& keywords,
@@ -143,6 +149,7 @@ class ShaderLibrary {
   std::set<std::string> used_;  // paths load() was asked for since begin_render
   bool strict_variants_ = false;
   std::vector<std::string> misses_;
+  SourceMap report_;
 };
 
 // RenderOptions::shaders (renderer.h): the library kept between renders,

@@ -14,8 +14,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 Result<VkRenderPass, VkResult> create_pass(VkDevice device, std::span<const VkAttachmentDescription> attachments,
                                           const VkSubpassDescription& subpass, VkPipelineStageFlags written_stages,
                                           VkAccessFlags written_access) {
@@ -56,7 +54,7 @@ VkAttachmentDescription cleared(VkFormat format, VkAttachmentStoreOp store, VkIm
 // and an R8 colour attachment that nothing writes or keeps, there because
 // casters' fragment stages write SV_Target (a fragment output without an
 // attachment is a validation warning).
-Result<VkRenderPass, RenderError> make_depth_pass(VkDevice device) {
+Result<VkRenderPass, Diagnostics> make_depth_pass(VkDevice device) {
   VkAttachmentDescription attachments[2] = {
       cleared(VK_FORMAT_D32_SFLOAT, VK_ATTACHMENT_STORE_OP_STORE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       cleared(VK_FORMAT_R8_UNORM, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL)};
@@ -72,13 +70,16 @@ Result<VkRenderPass, RenderError> make_depth_pass(VkDevice device) {
       create_pass(device, attachments, subpass,
                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-  if (!pass) return unexpected(error("cannot create the shadow-map render pass: " + vk_result_name(pass.error())));
+  if (!pass) {
+    return unexpected(render_error("cannot create the shadow-map render pass: " + vk_result_name(pass.error()),
+                                   DiagId::vulkan_failed));
+  }
   return *pass;
 }
 
 // A cube face: the casters' distances (R32F, cleared far beyond any range),
 // kept for the receivers, with a depth buffer that only orders the casters.
-Result<VkRenderPass, RenderError> make_cube_pass(VkDevice device) {
+Result<VkRenderPass, Diagnostics> make_cube_pass(VkDevice device) {
   VkAttachmentDescription attachments[2] = {
       cleared(VK_FORMAT_R32_SFLOAT, VK_ATTACHMENT_STORE_OP_STORE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
       cleared(VK_FORMAT_D32_SFLOAT, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
@@ -94,7 +95,10 @@ Result<VkRenderPass, RenderError> make_cube_pass(VkDevice device) {
                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
                       VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-  if (!pass) return unexpected(error("cannot create the shadow-cube render pass: " + vk_result_name(pass.error())));
+  if (!pass) {
+    return unexpected(render_error("cannot create the shadow-cube render pass: " + vk_result_name(pass.error()),
+                                   DiagId::vulkan_failed));
+  }
   return *pass;
 }
 
@@ -106,35 +110,35 @@ bool light_is_sampled(const LightValues* light, const std::vector<const std::vec
   });
 }
 
-Result<void, RenderError> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
+Result<void, Diagnostics> make_target(const Context& context, VkRenderPass pass, ShadowMap& map) {
   VkResultOf<Image> depth = create_image(context, {.width = map.width, .height = map.height, .format = VK_FORMAT_D32_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                                             VK_IMAGE_USAGE_SAMPLED_BIT});
-  if (!depth) return unexpected(error(describe(depth.error())));
+  if (!depth) return unexpected(render_error(describe(depth.error()), DiagId::vulkan_failed));
   map.depth = std::move(*depth);
   VkResultOf<Image> unused = create_image(context, {.width = map.width, .height = map.height, .format = VK_FORMAT_R8_UNORM,
                                                     .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
-  if (!unused) return unexpected(error(describe(unused.error())));
+  if (!unused) return unexpected(render_error(describe(unused.error()), DiagId::vulkan_failed));
   map.unused_color = std::move(*unused);
-  Result<VkFramebuffer, RenderError> fb =
+  Result<VkFramebuffer, Diagnostics> fb =
       make_framebuffer(context.device(), pass, {map.depth.view(), map.unused_color.view()}, map.width, map.height);
   if (!fb) return unexpected(fb.error());
   map.framebuffer = *fb;
   return {};
 }
 
-Result<std::shared_ptr<CubeTarget>, RenderError> make_cube_target(const Context& context, uint32_t size) {
+Result<std::shared_ptr<CubeTarget>, Diagnostics> make_cube_target(const Context& context, uint32_t size) {
   auto cube = std::make_shared<CubeTarget>();
   cube->device = context.device();
   VkResultOf<Image> color = create_image(context, {.width = size, .height = size, .layers = 6,
                                                    .format = VK_FORMAT_R32_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                                    .view = VK_IMAGE_VIEW_TYPE_CUBE});
-  if (!color) return unexpected(error(describe(color.error())));
+  if (!color) return unexpected(render_error(describe(color.error()), DiagId::vulkan_failed));
   cube->color = std::move(*color);
   VkResultOf<Image> depth = create_image(context, {.width = size, .height = size, .format = VK_FORMAT_D32_SFLOAT,
                                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT});
-  if (!depth) return unexpected(error(describe(depth.error())));
+  if (!depth) return unexpected(render_error(describe(depth.error()), DiagId::vulkan_failed));
   cube->depth = std::move(*depth);
   for (uint32_t face = 0; face < 6; ++face) {
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -143,15 +147,16 @@ Result<std::shared_ptr<CubeTarget>, RenderError> make_cube_target(const Context&
     info.format = VK_FORMAT_R32_SFLOAT;
     info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, face, 1};
     if (VkResult r = vkCreateImageView(context.device(), &info, nullptr, &cube->faces[face]); r != VK_SUCCESS) {
-      return unexpected(error("cannot create a shadow-cube face view: " + vk_result_name(r)));
+      return unexpected(
+          render_error("cannot create a shadow-cube face view: " + vk_result_name(r), DiagId::vulkan_failed));
     }
   }
   return cube;
 }
 
-Result<void, RenderError> make_pipelines(const Context& context, const Scene& scene, const std::vector<ObjectState>& objects,
-                                         VkRenderPass pass, VkPipelineCache cache, ShadowMap& map,
-                                         uint64_t& pipelines_created) {
+Result<void, Diagnostics> make_pipelines(const Context& context, const Scene& scene,
+                                         const std::vector<ObjectState>& objects, VkRenderPass pass,
+                                         VkPipelineCache cache, ShadowMap& map, uint64_t& pipelines_created) {
   for (const Draw& d : map.casters.draws) {
     bool created = false;
     PipelineState state = d.state;
@@ -159,24 +164,24 @@ Result<void, RenderError> make_pipelines(const Context& context, const Scene& sc
     state.offset_factor += map.view.slope_bias;
     Result<VkPipeline, std::string> p =
         get_pipeline(context, *d.variant->program, state, objects[d.object].mirrored, pass, cache, &created);
-    if (!p) return unexpected(error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
+    if (!p) return unexpected(render_error(fmt::format("{}: {}: {}", scene.path, d.record.object, p.error())));
     map.pipelines.push_back(*p);
     pipelines_created += created;
   }
   return {};
 }
 
-Result<void, RenderError> ensure_render_pass(VkDevice device, ShadowPasses& out) {
+Result<void, Diagnostics> ensure_render_pass(VkDevice device, ShadowPasses& out) {
   if (out.render_pass) return {};
-  Result<VkRenderPass, RenderError> pass = make_depth_pass(device);
+  Result<VkRenderPass, Diagnostics> pass = make_depth_pass(device);
   if (!pass) return unexpected(pass.error());
   out.render_pass = *pass;
   return {};
 }
 
-Result<void, RenderError> ensure_cube_pass(VkDevice device, ShadowPasses& out) {
+Result<void, Diagnostics> ensure_cube_pass(VkDevice device, ShadowPasses& out) {
   if (out.cube_pass) return {};
-  Result<VkRenderPass, RenderError> pass = make_cube_pass(device);
+  Result<VkRenderPass, Diagnostics> pass = make_cube_pass(device);
   if (!pass) return unexpected(pass.error());
   out.cube_pass = *pass;
   return {};
@@ -192,9 +197,10 @@ UniformValues light_frame(const Scene& scene, const ShadowView& view, const Came
 
 // One entry a cascade: the first makes the atlas and begins its render
 // pass, the others draw into their squares of it in the same pass.
-Result<void, RenderError> prepare_cascades(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
-                                           const LightValues* light, const ShadowView& view, ShaderLibrary& library,
-                                           VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+Result<void, Diagnostics> prepare_cascades(const Context& context, const Scene& scene,
+                                           std::vector<ObjectState>& objects, const LightValues* light,
+                                           const ShadowView& view, ShaderLibrary& library, VkPipelineCache cache,
+                                           ShadowPasses& out, uint64_t& pipelines_created) {
   FACET_TRY(ensure_render_pass(context.device(), out));
   for (size_t c = 0; c < view.cascades.size(); ++c) {
     const ShadowCascade& cascade = view.cascades[c];
@@ -212,7 +218,7 @@ Result<void, RenderError> prepare_cascades(const Context& context, const Scene& 
     map->caster_light->source = light;
     const glm::vec4& bias = cascade.caster_bias;
     map->caster_light->values.set_vector("unity_LightShadowBias", bias.x, bias.y, bias.z, 0);
-    Result<DrawListResult, RenderError> casters =
+    Result<DrawListResult, Diagnostics> casters =
         build_caster_draws(context, scene, objects, *map->caster_light, map->view, library);
     if (!casters) return unexpected(casters.error());
     map->casters = std::move(*casters);
@@ -225,12 +231,12 @@ Result<void, RenderError> prepare_cascades(const Context& context, const Scene& 
 }
 
 // Six entries, one a face, sharing one cube target.
-Result<void, RenderError> prepare_cube(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
+Result<void, Diagnostics> prepare_cube(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
                                        const LightValues* light, const ShadowView& view, ShaderLibrary& library,
                                        VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
   const uint32_t size = uint32_t(scene.shadow_resolution);
   FACET_TRY(ensure_cube_pass(context.device(), out));
-  Result<std::shared_ptr<CubeTarget>, RenderError> cube = make_cube_target(context, size);
+  Result<std::shared_ptr<CubeTarget>, Diagnostics> cube = make_cube_target(context, size);
   if (!cube) return unexpected(cube.error());
   for (int face = 0; face < 6; ++face) {
     auto map = std::make_unique<ShadowMap>();
@@ -241,11 +247,11 @@ Result<void, RenderError> prepare_cube(const Context& context, const Scene& scen
     map->cube = *cube;
     map->face = face;
     // Each face draws its own copy: a draw's uniforms hold one camera.
-    Result<DrawListResult, RenderError> casters = build_caster_draws(context, scene, objects, *light, view, library);
+    Result<DrawListResult, Diagnostics> casters = build_caster_draws(context, scene, objects, *light, view, library);
     if (!casters) return unexpected(casters.error());
     map->casters = std::move(*casters);
     map->frame = light_frame(scene, view, map->view.camera, size);
-    Result<VkFramebuffer, RenderError> fb = make_framebuffer(
+    Result<VkFramebuffer, Diagnostics> fb = make_framebuffer(
         context.device(), out.cube_pass, {map->cube->faces[size_t(face)], map->cube->depth.view()}, size, size);
     if (!fb) return unexpected(fb.error());
     map->framebuffer = *fb;
@@ -296,10 +302,12 @@ const ShadowMap* ShadowPasses::camera_depth() const {
   return nullptr;
 }
 
-Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
-                                              const LightSetup& lights, const std::vector<ShadowView>& views,
-                                              const std::vector<const std::vector<Draw>*>& receivers, ShaderLibrary& library,
-                                              VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+Result<void, Diagnostics> prepare_shadow_maps(const Context& context, const Scene& scene,
+                                              std::vector<ObjectState>& objects, const LightSetup& lights,
+                                              const std::vector<ShadowView>& views,
+                                              const std::vector<const std::vector<Draw>*>& receivers,
+                                              ShaderLibrary& library, VkPipelineCache cache, ShadowPasses& out,
+                                              uint64_t& pipelines_created) {
   out.device = context.device();
   uint32_t size = uint32_t(scene.shadow_resolution);
   for (const ShadowView& view : views) {
@@ -318,7 +326,7 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
     map->view = view;
     map->light = light;
     map->width = map->height = size;
-    Result<DrawListResult, RenderError> casters = build_caster_draws(context, scene, objects, *light, view, library);
+    Result<DrawListResult, Diagnostics> casters = build_caster_draws(context, scene, objects, *light, view, library);
     if (!casters) return unexpected(casters.error());
     map->casters = std::move(*casters);
     map->frame = light_frame(scene, view, view.camera, size);
@@ -329,10 +337,11 @@ Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scen
   return {};
 }
 
-Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
+Result<void, Diagnostics> prepare_camera_depth(const Context& context, const Scene& scene,
                                                std::vector<ObjectState>& objects, const LightValues& no_light,
-                                               const CameraMatrices& camera, uint32_t width, uint32_t height, ShaderLibrary& library,
-                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created) {
+                                               const CameraMatrices& camera, uint32_t width, uint32_t height,
+                                               ShaderLibrary& library, VkPipelineCache cache, ShadowPasses& out,
+                                               uint64_t& pipelines_created) {
   out.device = context.device();
   FACET_TRY(ensure_render_pass(context.device(), out));
   auto map = std::make_unique<ShadowMap>();
@@ -340,9 +349,9 @@ Result<void, RenderError> prepare_camera_depth(const Context& context, const Sce
   map->view.lens = scene.camera;
   map->width = width;
   map->height = height;
-  Result<DrawListResult, RenderError> casters =
-      caster_draws(context, scene, objects, no_light, [](const ObjectState& o) { return o.queue <= 2500; }, "",
-                   "the camera depth texture", "SHADOWS_DEPTH", library);
+  Result<DrawListResult, Diagnostics> casters = caster_draws(
+      context, scene, objects, no_light, [](const ObjectState& o) { return o.queue <= 2500; }, "",
+      "the camera depth texture", "SHADOWS_DEPTH", library);
   if (!casters) return unexpected(casters.error());
   map->casters = std::move(*casters);
   FACET_TRY(make_target(context, out.render_pass, *map));
@@ -374,7 +383,7 @@ void begin_pass(VkCommandBuffer commands, const ShadowPasses& passes, const Shad
 
 }  // namespace
 
-Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
+Result<uint64_t, Diagnostics> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
                                                  const std::vector<ObjectState>& objects, const BindDraw& bind,
                                                  const UniformValues& camera_frame) {
   uint64_t triangles = 0;
@@ -394,7 +403,7 @@ Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const
       const Draw& d = map->casters.draws[i];
       const ObjectState& object = objects[d.object];
       vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, map->pipelines[i]);
-      Result<void, RenderError> bound = bind(commands, d, map->light ? map->frame : camera_frame);
+      Result<void, Diagnostics> bound = bind(commands, d, map->light ? map->frame : camera_frame);
       if (!bound) {
         vkCmdEndRenderPass(commands);
         return unexpected(bound.error());

@@ -16,6 +16,7 @@
 #include "facet/runtime/image.h"
 #include "render/draw_list.h"
 #include "render/shadows.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -73,23 +74,26 @@ struct ShadowPasses {
 
 // Makes a map for each view whose light some drawn variant samples it with
 // (samples_shadow_map), with the caster draws and their pipelines.
-Result<void, RenderError> prepare_shadow_maps(const Context& context, const Scene& scene, std::vector<ObjectState>& objects,
-                                              const LightSetup& lights, const std::vector<ShadowView>& views,
-                                              const std::vector<const std::vector<Draw>*>& receivers, ShaderLibrary& library,
-                                              VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
+Result<void, Diagnostics> prepare_shadow_maps(const Context& context, const Scene& scene,
+                                              std::vector<ObjectState>& objects, const LightSetup& lights,
+                                              const std::vector<ShadowView>& views,
+                                              const std::vector<const std::vector<Draw>*>& receivers,
+                                              ShaderLibrary& library, VkPipelineCache cache, ShadowPasses& out,
+                                              uint64_t& pipelines_created);
 
 // Adds the camera depth texture: the ShadowCaster passes of the opaque
 // objects (queue <= 2500) from the camera, at the frame's size.
-Result<void, RenderError> prepare_camera_depth(const Context& context, const Scene& scene,
+Result<void, Diagnostics> prepare_camera_depth(const Context& context, const Scene& scene,
                                                std::vector<ObjectState>& objects, const LightValues& no_light,
-                                               const CameraMatrices& camera, uint32_t width, uint32_t height, ShaderLibrary& library,
-                                               VkPipelineCache cache, ShadowPasses& out, uint64_t& pipelines_created);
+                                               const CameraMatrices& camera, uint32_t width, uint32_t height,
+                                               ShaderLibrary& library, VkPipelineCache cache, ShadowPasses& out,
+                                               uint64_t& pipelines_created);
 
-using BindDraw = std::function<Result<void, RenderError>(VkCommandBuffer, const Draw&, const UniformValues& frame)>;
+using BindDraw = std::function<Result<void, Diagnostics>(VkCommandBuffer, const Draw&, const UniformValues& frame)>;
 
 // Records every map's pass; the camera depth texture's draws see
 // `camera_frame`, the frame's own values. Returns the triangles drawn.
-Result<uint64_t, RenderError> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
+Result<uint64_t, Diagnostics> record_shadow_maps(VkCommandBuffer commands, const ShadowPasses& passes,
                                                  const std::vector<ObjectState>& objects, const BindDraw& bind,
                                                  const UniformValues& camera_frame);
 

@@ -291,11 +291,11 @@ std::vector<std::string> shadow_keywords(const SceneLight& light) {
   return {light.type == LightType::directional ? "SHADOWS_SCREEN" : "SHADOWS_DEPTH"};
 }
 
-Result<DrawListResult, RenderError> caster_draws(const Context& context, const Scene& scene,
-                                                std::vector<ObjectState>& objects, const LightValues& light,
-                                                const std::function<bool(const ObjectState&)>& include,
-                                                const std::string& light_text, const std::string& target,
-                                                const std::string& keyword, ShaderLibrary& library) {
+Result<DrawListResult, Diagnostics> caster_draws(const Context& context, const Scene& scene,
+                                                 std::vector<ObjectState>& objects, const LightValues& light,
+                                                 const std::function<bool(const ObjectState&)>& include,
+                                                 const std::string& light_text, const std::string& target,
+                                                 const std::string& keyword, ShaderLibrary& library) {
   DrawListResult out;
   for (ObjectState& object : objects) {
     if (object.background || !include(object)) continue;
@@ -322,9 +322,9 @@ Result<DrawListResult, RenderError> caster_draws(const Context& context, const S
   return out;
 }
 
-Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
-                                                      std::vector<ObjectState>& objects, const LightValues& light,
-                                                      const ShadowView& view, ShaderLibrary& library) {
+Result<DrawListResult, Diagnostics> build_caster_draws(const Context& context, const Scene& scene,
+                                                       std::vector<ObjectState>& objects, const LightValues& light,
+                                                       const ShadowView& view, ShaderLibrary& library) {
   const SceneLight& scene_light = scene.lights[view.light];
   glm::vec3 camera_position = camera_matrices(scene.camera, 1, 1).position;
   std::string light_text = light_description(scene, view.light);

@@ -19,6 +19,7 @@
 #include "facet/runtime/scene.h"
 #include "render/draw_list.h"
 #include "render/frame_values.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -79,17 +80,17 @@ std::vector<std::string> shadow_keywords(const SceneLight& light);
 // point light's cube; with `light`) of the objects that `include` takes;
 // those without such a pass are listed in out.skipped as not in `target`
 // ("the camera depth texture").
-Result<DrawListResult, RenderError> caster_draws(const Context& context, const Scene& scene,
-                                                std::vector<ObjectState>& objects, const LightValues& light,
-                                                const std::function<bool(const ObjectState&)>& include,
-                                                const std::string& light_text, const std::string& target,
-                                                const std::string& keyword, ShaderLibrary& library);
+Result<DrawListResult, Diagnostics> caster_draws(const Context& context, const Scene& scene,
+                                                 std::vector<ObjectState>& objects, const LightValues& light,
+                                                 const std::function<bool(const ObjectState&)>& include,
+                                                 const std::string& light_text, const std::string& target,
+                                                 const std::string& keyword, ShaderLibrary& library);
 
 // The ShadowCaster draws of `objects` into the map of `view`: every object
 // whose shader has a ShadowCaster pass and whose bounds reach the light's
 // view; skipped casters (no such pass) are listed in out.skipped.
-Result<DrawListResult, RenderError> build_caster_draws(const Context& context, const Scene& scene,
-                                                      std::vector<ObjectState>& objects, const LightValues& light,
-                                                      const ShadowView& view, ShaderLibrary& library);
+Result<DrawListResult, Diagnostics> build_caster_draws(const Context& context, const Scene& scene,
+                                                       std::vector<ObjectState>& objects, const LightValues& light,
+                                                       const ShadowView& view, ShaderLibrary& library);
 
 }  // namespace facet::runtime

@@ -9,8 +9,6 @@
 namespace facet::runtime {
 namespace {
 
-RenderError error(std::string message) { return RenderError{std::move(message)}; }
-
 // The built-in quad (-0.5..0.5) to 0..1, then to the whole of clip space,
 // halfway into the depth range: at depth 0 (the near plane) the round trip
 // through the camera's inverse could land it a rounding error in front of
@@ -39,8 +37,9 @@ VkAttachmentDescription attachment(VkFormat format, bool load, VkImageLayout ini
   return a;
 }
 
-Result<VkRenderPass, RenderError> make_single_pass(VkDevice device, const std::vector<VkAttachmentDescription>& attachments,
-                                            bool has_depth, const char* what) {
+Result<VkRenderPass, Diagnostics> make_single_pass(VkDevice device,
+                                                   const std::vector<VkAttachmentDescription>& attachments,
+                                                   bool has_depth, const char* what) {
   std::vector<VkAttachmentReference> colors;
   for (uint32_t i = 0; i + (has_depth ? 1 : 0) < attachments.size(); ++i) {
     colors.push_back({i, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
@@ -74,12 +73,13 @@ Result<VkRenderPass, RenderError> make_single_pass(VkDevice device, const std::v
   info.pDependencies = deps;
   VkRenderPass pass = VK_NULL_HANDLE;
   if (VkResult r = vkCreateRenderPass(device, &info, nullptr, &pass); r != VK_SUCCESS) {
-    return unexpected(error(fmt::format("cannot create the {} render pass: {}", what, vk_result_name(r))));
+    return unexpected(render_error(fmt::format("cannot create the {} render pass: {}", what, vk_result_name(r)),
+                                   DiagId::vulkan_failed));
   }
   return pass;
 }
 
-Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPass pass,
+Result<VkFramebuffer, Diagnostics> make_framebuffer(VkDevice device, VkRenderPass pass,
                                                     const std::vector<VkImageView>& views, uint32_t width,
                                                     uint32_t height) {
   VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
@@ -91,12 +91,12 @@ Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPas
   fb.layers = 1;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   if (VkResult r = vkCreateFramebuffer(device, &fb, nullptr, &framebuffer); r != VK_SUCCESS) {
-    return unexpected(error("cannot create a framebuffer: " + vk_result_name(r)));
+    return unexpected(render_error("cannot create a framebuffer: " + vk_result_name(r), DiagId::vulkan_failed));
   }
   return framebuffer;
 }
 
-Result<GpuMesh, RenderError> camera_quad_mesh(const Context& context, const CameraMatrices& camera) {
+Result<GpuMesh, Diagnostics> camera_quad_mesh(const Context& context, const CameraMatrices& camera) {
   MeshData quad = *builtin_mesh("quad");
   const glm::mat4 to_world = inverse_view_projection(camera) * quad_to_clip();
   for (Vertex& v : quad.vertices) {
@@ -118,7 +118,7 @@ UniformValues camera_quad_uniforms(const CameraMatrices& camera) {
   return values;
 }
 
-Result<void, RenderError> make_screen_pass_object(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> make_screen_pass_object(const Context& context, const Scene& scene, ShaderLibrary& library,
                                                   const CameraMatrices& camera, const std::string& file,
                                                   const std::string& what, const std::string& json_path,
                                                   ScreenPassObject& out) {
@@ -127,24 +127,27 @@ Result<void, RenderError> make_screen_pass_object(const Context& context, const 
   source.json_path = json_path;
   source.mesh = "quad";
   source.material.json_path = json_path;
-  Result<ShaderAsset*, std::string> shader = library.load_built_in(file);
+  Result<ShaderAsset*, Diagnostics> shader = library.load_built_in(file);
   if (!shader) {
-    return unexpected(error(fmt::format("{}: {}: the shader of {}, the stdlib's {}, does not load:\n{}", scene.path,
-                                        json_path, what, file, shader.error())));
+    return unexpected(scene_error(library.report_sources(), scene, json_path, DiagId::shader_unavailable,
+                                  fmt::format("the shader of {}, the stdlib's {}, does not load", what, file),
+                                  shader.error()));
   }
   source.material.shader = (*shader)->path;
   if ((*shader)->passes.empty()) {
-    return unexpected(error(fmt::format("{}: {}: the shader of {}, {}, has no pass", scene.path, json_path, what,
-                                        source.material.shader)));
+    return unexpected(render_error(
+        fmt::format("{}: {}: the shader of {}, {}, has no pass", scene.path, json_path, what, source.material.shader)));
   }
-  Result<GpuMesh, RenderError> quad = camera_quad_mesh(context, camera);
+  Result<GpuMesh, Diagnostics> quad = camera_quad_mesh(context, camera);
   if (!quad) return unexpected(quad.error());
   out.quad = std::make_unique<GpuMesh>(std::move(*quad));
   ObjectState s;
   s.scene = &source;
   s.shader = *shader;
-  Result<Material, MaterialError> material = make_material(s.shader->shader, source.material, scene.path);
-  if (!material) return unexpected(error(material.error().message));
+  Diagnostics material_diags;
+  Result<Material> material =
+      make_material(s.shader->shader, source.material, scene.path, library.report_sources(), material_diags);
+  if (!material) return unexpected(material_diags);
   s.material = std::move(*material);
   s.mesh = out.quad.get();
   s.draw = camera_quad_uniforms(camera);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/draw_list.h"
+#include "render/failure.h"
 
 namespace facet::runtime {
 
@@ -20,11 +21,11 @@ VkAttachmentDescription attachment(VkFormat format, bool load, VkImageLayout ini
 // One subpass over `attachments` (colour first; the depth, if any, last),
 // ordered after what came before it and before what reads it (fragment
 // shaders, attachments, transfers).
-Result<VkRenderPass, RenderError> make_single_pass(VkDevice device,
+Result<VkRenderPass, Diagnostics> make_single_pass(VkDevice device,
                                                    const std::vector<VkAttachmentDescription>& attachments,
                                                    bool has_depth, const char* what);
 
-Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPass pass,
+Result<VkFramebuffer, Diagnostics> make_framebuffer(VkDevice device, VkRenderPass pass,
                                                     const std::vector<VkImageView>& views, uint32_t width,
                                                     uint32_t height);
 
@@ -33,7 +34,7 @@ Result<VkFramebuffer, RenderError> make_framebuffer(VkDevice device, VkRenderPas
 // through the camera, and each corner's normal is the view ray through it
 // in Unity's camera space (+Z forward, z = 1), which Unity's deferred
 // shaders read when _LightAsQuad is 1 (set here too).
-Result<GpuMesh, RenderError> camera_quad_mesh(const Context& context, const CameraMatrices& camera);
+Result<GpuMesh, Diagnostics> camera_quad_mesh(const Context& context, const CameraMatrices& camera);
 UniformValues camera_quad_uniforms(const CameraMatrices& camera);
 
 // The object of one of the renderer's own full-screen passes: the stdlib's
@@ -46,7 +47,7 @@ struct ScreenPassObject {
 
 // `what` says what needs the shader, for the errors ("the deferred light
 // pass"); `json_path` is the scene key that asked for the pass.
-Result<void, RenderError> make_screen_pass_object(const Context& context, const Scene& scene, ShaderLibrary& library,
+Result<void, Diagnostics> make_screen_pass_object(const Context& context, const Scene& scene, ShaderLibrary& library,
                                                   const CameraMatrices& camera, const std::string& file,
                                                   const std::string& what, const std::string& json_path,
                                                   ScreenPassObject& out);

@@ -22,8 +22,8 @@ void add_material(std::vector<SceneInput>& inputs, const SceneMaterial& material
 // The .bin files of a glTF mesh (read once more here: the scene names only
 // the .gltf); none when it does not load, which the render then reports.
 void add_gltf_buffers(std::vector<SceneInput>& inputs, const std::string& mesh) {
-  MeshError error;
-  if (std::optional<GltfModel> model = load_gltf(mesh, error)) {
+  Diagnostics ignored;
+  if (std::optional<GltfModel> model = load_gltf(mesh, ignored)) {
     for (const std::string& file : model->buffer_files) inputs.push_back({file, "a buffer of a glTF mesh of the scene"});
   }
 }

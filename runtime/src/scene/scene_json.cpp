@@ -21,6 +21,7 @@
 #include "facet/runtime/mesh.h"
 #include "facet/runtime/scene.h"
 #include "scene/gltf_material.h"
+#include "scene/json_locate.h"
 
 namespace facet::runtime {
 namespace {
@@ -379,9 +380,9 @@ struct Reader {
       out.push_back(std::move(o));
       return;
     }
-    MeshError error;
-    std::optional<GltfModel> model = load_gltf(o.mesh, error, {.materials = true});
-    if (!model) throw Bad{join(path, "mesh"), error.message};
+    Diagnostics mesh_diags;
+    std::optional<GltfModel> model = load_gltf(o.mesh, mesh_diags, {.materials = true});
+    if (!model) throw Bad{join(path, "mesh"), mesh_diags.all().front().message};
     for (const GltfPart& part : model->parts) {
       SceneObject each = o;
       each.gltf_material = part.material;
@@ -592,19 +593,6 @@ struct Reader {
   }
 };
 
-std::string line_column(const std::string& text, size_t byte) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return fmt::format("{}:{}", line, column);
-}
-
 // Deeper than any scene needs (about 6 levels), and shallow enough that no
 // recursive walk of a json value can overflow the stack.
 constexpr size_t kMaxJsonDepth = 64;
@@ -676,16 +664,18 @@ class LocatingDomBuilder {
   std::string message_ = "cannot parse the JSON";
 };
 
-Result<json, SceneError> parse_json(const std::string& text, const std::string& path) {
-  if (std::optional<size_t> at = too_deep_at(text)) {
-    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: nested deeper than {} levels", path,
-                                             line_column(text, *at), kMaxJsonDepth)});
+Result<json> parse_json(const std::string& text, FileId file, Diagnostics& diags) {
+  auto at = [&](size_t byte) { return SourceSpan{file, uint32_t(byte), uint32_t(byte)}; };
+  if (std::optional<size_t> deep = too_deep_at(text)) {
+    diags.add(DiagId::scene_json_syntax, at(*deep),
+              fmt::format("invalid JSON: nested deeper than {} levels", kMaxJsonDepth));
+    return failure();
   }
   json j;
   LocatingDomBuilder builder(j);
   if (!json::sax_parse(text, &builder)) {
-    return unexpected(SceneError{fmt::format("{}:{}: invalid JSON: {}", path, line_column(text, builder.byte()),
-                                             builder.message())});
+    diags.add(DiagId::scene_json_syntax, at(builder.byte()), "invalid JSON: " + builder.message());
+    return failure();
   }
   return j;
 }
@@ -694,39 +684,46 @@ Result<json, SceneError> parse_json(const std::string& text, const std::string& 
 
 // The one boundary where exceptions stop: Bad from the reader's checks, and
 // whatever nlohmann, std::filesystem or an allocation might still throw.
-Result<Scene, SceneError> parse_scene(const std::string& text, const std::string& path) {
+Result<Scene> parse_scene(const std::string& text, const std::string& path, SourceMap& sources, Diagnostics& diags) {
+  const FileId file = sources.add_file(path, text);
   try {
-    Result<json, SceneError> j = parse_json(text, path);
-    if (!j) return unexpected(j.error());
+    Result<json> j = parse_json(text, file, diags);
+    if (!j) return failure();
     Reader reader{std::filesystem::path(path).parent_path()};
     Scene scene = reader.scene(*j);
     scene.path = path;
     return scene;
   } catch (const Bad& bad) {
-    std::string where = bad.path.empty() ? "" : bad.path + ": ";
-    return unexpected(SceneError{fmt::format("{}: {}{}", path, where, bad.what)});
+    SourceSpan span{file, 0, 0};
+    if (std::optional<JsonExtent> value = locate_json_value(text, bad.path)) {
+      span = {file, uint32_t(value->begin), uint32_t(value->end)};
+    }
+    diags.add(DiagId::scene_invalid, span, bad.path.empty() ? bad.what : bad.path + ": " + bad.what);
   } catch (const std::bad_alloc&) {
-    return unexpected(SceneError{fmt::format("{}: not enough memory to read the scene", path)});
+    diags.add(DiagId::scene_unreadable, SourceSpan{file, 0, 0}, "not enough memory to read the scene");
   } catch (const std::exception& e) {
-    return unexpected(SceneError{fmt::format("{}: {}", path, e.what())});
+    diags.add(DiagId::scene_invalid, SourceSpan{file, 0, 0}, e.what());
   }
+  return failure();
 }
 
-Result<Scene, SceneError> load_scene(const std::string& path) {
+Result<Scene> load_scene(const std::string& path, SourceMap& sources, Diagnostics& diags) {
+  auto unreadable = [&](std::string why) {
+    diags.add(DiagId::scene_unreadable, SourceSpan{}, fmt::format("{}: {}", path, why));
+    return failure();
+  };
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    return unexpected(SceneError{fmt::format("{}: cannot open the scene file (no such file)", path)});
-  }
+  if (!std::filesystem::is_regular_file(path, ec)) return unreadable("cannot open the scene file (no such file)");
   constexpr uintmax_t kMaxSceneBytes = uintmax_t(64) << 20;  // a scene is a few KiB; its DOM takes ~10x the text
   if (uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
-    return unexpected(SceneError{fmt::format("{}: the scene file has {} bytes, more than the {} MiB a scene may have",
-                                             path, size, kMaxSceneBytes >> 20)});
+    return unreadable(
+        fmt::format("the scene file has {} bytes, more than the {} MiB a scene may have", size, kMaxSceneBytes >> 20));
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  if (!in && !in.eof()) return unexpected(SceneError{fmt::format("{}: cannot read the scene file", path)});
-  return parse_scene(buffer.str(), path);
+  if (!in && !in.eof()) return unreadable("cannot read the scene file");
+  return parse_scene(buffer.str(), path, sources, diags);
 }
 
 }  // namespace facet::runtime

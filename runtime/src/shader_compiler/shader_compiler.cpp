@@ -13,31 +13,35 @@ std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerO
   auto compiler = std::make_shared<const Compiler>();
   auto out = std::make_shared<ShaderCompiler>();
   out->stdlib_dir = default_stdlib_dir();
-  out->load = [compiler, options](const std::string& path) -> Result<ShaderSource, std::string> {
+  out->load = [compiler, options](const std::string& path, SourceMap& report,
+                                  Diagnostics& diags) -> Result<ShaderSource> {
     ShaderSource source;
-    Diagnostics diags;
+    Diagnostics found;
+    auto failed = [&] {
+      diags.append(rebase_diagnostics(found, source.sources, report));
+      return failure();
+    };
     CompileOptions load_options;
     load_options.backend.include_dirs = options.include_dirs;
-    Result<ir::Shader> shader = compiler->load(path, source.sources, diags, load_options);
-    if (!shader) return unexpected(render_text(diags, source.sources));
+    Result<ir::Shader> shader = compiler->load(path, source.sources, found, load_options);
+    if (!shader) return failed();
     source.shader = std::move(*shader);
-    Result<std::vector<SelectedPass>> passes = compiler->select_passes(source.shader, {}, diags);
-    if (!passes) return unexpected(render_text(diags, source.sources));
+    Result<std::vector<SelectedPass>> passes = compiler->select_passes(source.shader, {}, found);
+    if (!passes) return failed();
     source.passes = std::move(*passes);
     if (!source.passes.empty()) source.queue = source.shader.subshaders[source.passes[0].subshader].queue;
     return source;
   };
   out->compile = [compiler, options](const ir::Shader& shader, SourceMap& sources, size_t pass,
-                                     const std::vector<std::string>& keywords)
-      -> Result<CompiledPassVariant, std::string> {
+                                     const std::vector<std::string>& keywords,
+                                     Diagnostics& diags) -> Result<CompiledPassVariant> {
     CompileOptions compile_options;
     compile_options.passes = {std::to_string(pass)};
     compile_options.keywords = keywords;
     compile_options.cache_dir = options.cache_dir;
     compile_options.backend.include_dirs = options.include_dirs;
-    Diagnostics diags;
     Result<CompiledShader> compiled = compiler->compile(shader, compile_options, sources, diags);
-    if (!compiled) return unexpected(render_text(diags, sources));
+    if (!compiled) return failure();
     return CompiledPassVariant{std::move(compiled->package),
                                {compiled->dependencies.begin(), compiled->dependencies.end()}};
   };

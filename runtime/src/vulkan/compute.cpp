@@ -5,6 +5,7 @@
 
 #include <utility>
 
+#include "facet/runtime/submission.h"
 #include "facet/runtime/vulkan_context.h"
 
 namespace facet::runtime {
@@ -12,60 +13,6 @@ namespace {
 
 // Long enough for a slow dispatch on lavapipe under ASan; a hang still ends.
 constexpr uint64_t kFenceTimeoutNs = 120'000'000'000ull;
-
-// The command buffer and fence of one submission.
-struct OneShot {
-  VkDevice device = VK_NULL_HANDLE;
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandBuffer commands = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
-  OneShot() = default;
-  OneShot(const OneShot&) = delete;
-  OneShot& operator=(const OneShot&) = delete;
-  ~OneShot() {
-    if (fence) vkDestroyFence(device, fence, nullptr);
-    if (commands) vkFreeCommandBuffers(device, pool, 1, &commands);
-  }
-};
-
-VkResultOf<void> begin_one_shot(const Context& context, OneShot& shot) {
-  shot.device = context.device();
-  shot.pool = context.command_pool();
-  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocate.commandPool = shot.pool;
-  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocate.commandBufferCount = 1;
-  if (VkResult r = vkAllocateCommandBuffers(shot.device, &allocate, &shot.commands); r != VK_SUCCESS) {
-    shot.commands = VK_NULL_HANDLE;
-    return vk_failure(VkErrorCode::submit_failed, "cannot allocate a command buffer", r);
-  }
-  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  if (VkResult r = vkCreateFence(shot.device, &fence, nullptr, &shot.fence); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "cannot create a fence", r);
-  }
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  if (VkResult r = vkBeginCommandBuffer(shot.commands, &begin); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "cannot begin a command buffer", r);
-  }
-  return {};
-}
-
-VkResultOf<void> submit_and_wait(const Context& context, OneShot& shot) {
-  if (VkResult r = vkEndCommandBuffer(shot.commands); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "cannot end a command buffer", r);
-  }
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &shot.commands;
-  if (VkResult r = vkQueueSubmit(context.queue(), 1, &submit, shot.fence); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "vkQueueSubmit failed", r);
-  }
-  if (VkResult r = vkWaitForFences(shot.device, 1, &shot.fence, VK_TRUE, kFenceTimeoutNs); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "waiting for the dispatch failed", r);
-  }
-  return {};
-}
 
 VkResultOf<void> check_args(const ComputePipeline& pipeline, const DispatchArgs& args) {
   const ComputeLayout& layout = pipeline.interface();
@@ -181,10 +128,9 @@ void ComputePipeline::reset() {
 VkResultOf<DispatchTiming> dispatch(const Context& context, const ComputePipeline& pipeline, const DispatchArgs& args) {
   FACET_TRY(check_args(pipeline, args));
   write_descriptors(context, pipeline, args);
-  OneShot shot;
-  FACET_TRY(begin_one_shot(context, shot));
-  record_dispatch(context, pipeline, args, shot.commands);
-  FACET_TRY(submit_and_wait(context, shot));
+  FACET_TRY(submit_and_wait(
+      context, [&](VkCommandBuffer commands) { record_dispatch(context, pipeline, args, commands); },
+      {.timeout_ns = kFenceTimeoutNs}));
   VkResultOf<std::optional<uint64_t>> ns = read_timing(context);
   if (!ns) return unexpected(ns.error());
   return DispatchTiming{*ns};

@@ -215,37 +215,6 @@ VkResultOf<Image> create_image(const Context& context, const ImageDesc& desc) {
   return image;
 }
 
-VkResultOf<void> submit_and_wait(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
-  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocate.commandPool = context.command_pool();
-  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocate.commandBufferCount = 1;
-  VkCommandBuffer commands = VK_NULL_HANDLE;
-  if (VkResult r = vkAllocateCommandBuffers(context.device(), &allocate, &commands); r != VK_SUCCESS) {
-    return vk_failure(VkErrorCode::submit_failed, "cannot allocate a command buffer", r);
-  }
-  VkFence fence = VK_NULL_HANDLE;
-  auto cleanup = [&] {
-    if (fence) vkDestroyFence(context.device(), fence, nullptr);
-    vkFreeCommandBuffers(context.device(), context.command_pool(), 1, &commands);
-  };
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkBeginCommandBuffer(commands, &begin);
-  record(commands);
-  VkResult r = vkEndCommandBuffer(commands);
-  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  if (r == VK_SUCCESS) r = vkCreateFence(context.device(), &fence_info, nullptr, &fence);
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &commands;
-  if (r == VK_SUCCESS) r = vkQueueSubmit(context.queue(), 1, &submit, fence);
-  if (r == VK_SUCCESS) r = vkWaitForFences(context.device(), 1, &fence, VK_TRUE, UINT64_MAX);
-  cleanup();
-  if (r != VK_SUCCESS) return vk_failure(VkErrorCode::submit_failed, "recording, submitting or waiting failed", r);
-  return {};
-}
-
 void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from, VkImageLayout to) {
   auto [src_access, src_stage] = layout_access(from);
   auto [dst_access, dst_stage] = layout_access(to);

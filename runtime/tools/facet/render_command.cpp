@@ -97,9 +97,11 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     err << "facet render: nothing to write: give -o out.png and/or --exr out.exr\n";
     return 1;
   }
-  auto scene = runtime::load_scene(a.scene);
+  SourceMap sources;
+  Diagnostics diags;
+  auto scene = runtime::load_scene(a.scene, sources, diags);
   if (!scene) {
-    err << scene.error().message << "\n";
+    err << render_text(diags, sources);
     return 1;
   }
   if (!a.packages.empty()) use_packages(*scene, a.packages);
@@ -131,9 +133,10 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
                                           {.cache_dir = a.cache,
                                            .include_dirs = a.include_dirs,
                                            .shader_dirs = a.shader_dirs}),
-                                      .frames = a.frames, .strict_variants = a.strict_variants});
+                                      .frames = a.frames, .strict_variants = a.strict_variants},
+                                     sources, diags);
   if (!frame) {
-    err << frame.error().message << "\n";
+    err << render_text(diags, sources);
     return 1;
   }
   for (const std::string& miss : frame->variant_misses) err << "facet render: warning: " << miss << "\n";
@@ -149,14 +152,14 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
   if (a.explain) out << runtime::explain_text(*frame);
   if (a.stats) print_stats(out, *frame, **context);
   if (!a.png.empty()) {
-    if (auto w = runtime::write_png(*frame, a.png); !w) {
-      err << w.error().message << "\n";
+    if (!runtime::write_png(*frame, a.png, diags)) {
+      err << render_text(diags, sources);
       return 1;
     }
   }
   if (!a.exr.empty()) {
-    if (auto w = runtime::write_exr(*frame, a.exr); !w) {
-      err << w.error().message << "\n";
+    if (!runtime::write_exr(*frame, a.exr, diags)) {
+      err << render_text(diags, sources);
       return 1;
     }
   }

@@ -23,9 +23,11 @@ struct PlayArgs {
 
 int play(const PlayArgs& a) {
   using namespace facet;
-  auto scene = runtime::load_scene(a.scene);
+  SourceMap sources;
+  Diagnostics diags;
+  auto scene = runtime::load_scene(a.scene, sources, diags);
   if (!scene) {
-    std::cerr << scene.error().message << "\n";
+    std::cerr << render_text(diags, sources);
     return 1;
   }
   if (auto clash = runtime::output_clash("facet-play", {a.png}, runtime::scene_inputs(a.scene, *scene))) {
@@ -37,14 +39,14 @@ int play(const PlayArgs& a) {
     std::cerr << "facet-play: " << runtime::describe(context.error()) << "\n";
     return 1;
   }
-  auto frame = runtime::render_scene(**context, *scene, {.strict_variants = a.strict_variants});
+  auto frame = runtime::render_scene(**context, *scene, {.strict_variants = a.strict_variants}, sources, diags);
   if (!frame) {
-    std::cerr << frame.error().message << "\n";
+    std::cerr << render_text(diags, sources);
     return 1;
   }
   for (const std::string& miss : frame->variant_misses) std::cerr << "facet-play: warning: " << miss << "\n";
-  if (auto written = runtime::write_png(*frame, a.png); !written) {
-    std::cerr << written.error().message << "\n";
+  if (!runtime::write_png(*frame, a.png, diags)) {
+    std::cerr << render_text(diags, sources);
     return 1;
   }
   if (a.validation && !(*context)->messages().empty()) {

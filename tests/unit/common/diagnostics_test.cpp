@@ -99,5 +99,39 @@ TEST(DiagnosticsTest, DisablingAGroupSilencesItsNotesAndKeepsOtherGroupsNotes) {
   EXPECT_EQ(apply_warning_options(diags, {.disabled_groups = {"usepass"}}).size(), 2u);
 }
 
+TEST(DiagnosticsRebaseTest, SpansNotesAndIncludeStacksPointIntoTheNewMapAtTheSameText) {
+  SourceMap from;
+  FileId unused = from.add_file("unused.h", "nothing");
+  FileId shader = from.add_file("a.shader", "line one\nline two\n");
+  FileId include = from.add_file("b.cginc", "#include\n");
+  Diagnostics diags;
+  diags.add(DiagId::parse_unexpected_token, {shader, 14, 17}, "here").note({include, 1, 8}, "from there");
+  diags.mutable_all()[0].include_stack.push_back({include, 0, 1});
+  diags.add(DiagId::render_invalid, {}, "no place");
+
+  SourceMap to;
+  FileId already = to.add_file("b.cginc", "#include\n");
+  Diagnostics moved = rebase_diagnostics(diags, from, to);
+  ASSERT_EQ(moved.size(), 2u);
+  const Diagnostic& d = moved.all()[0];
+  EXPECT_EQ(to.path(d.span.file), "a.shader");
+  EXPECT_EQ(to.line_column(d.span.file, d.span.begin).line, 2u);
+  EXPECT_EQ(d.notes[0].span.file, already);  // a file the map has under that path is used as it is
+  EXPECT_EQ(d.include_stack[0].file, already);
+  EXPECT_FALSE(moved.all()[1].span.has_location());
+  EXPECT_EQ(to.file_count(), 2u);  // unused.h is not copied
+  EXPECT_EQ(render_text(moved, to), render_text(diags, from));
+  (void)unused;
+}
+
+TEST(DiagnosticsRebaseTest, ASpanPastTheOldMapLosesItsPlaceRatherThanPointingElsewhere) {
+  SourceMap from, to;
+  Diagnostics diags;
+  diags.add(DiagId::render_invalid, {7, 0, 1}, "stale");
+  Diagnostics moved = rebase_diagnostics(diags, from, to);
+  EXPECT_FALSE(moved.all()[0].span.has_location());
+  EXPECT_EQ(to.file_count(), 0u);
+}
+
 }  // namespace
 }  // namespace facet

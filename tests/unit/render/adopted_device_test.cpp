@@ -97,16 +97,16 @@ TEST_F(AdoptedDeviceTest, DrawsTheSamePixelsOnTheEnginesDeviceAndLeavesItToTheEn
     ASSERT_TRUE(adopted) << describe(adopted.error());
     EXPECT_EQ((*adopted)->device(), engine.device);
     EXPECT_EQ((*adopted)->device_info().name, context().device_info().name);
-    auto renderer = Renderer::create(**adopted, {.shader_compiler = test_support::with_compiler({}).shader_compiler});
+    auto renderer = test_support::create_renderer(**adopted, {.shader_compiler = test_support::with_compiler({}).shader_compiler});
     ASSERT_TRUE(renderer) << renderer.error().message;
     RenderedFrame frame;
     for (int f = 0; f < 3; ++f) {
       scene.time = float(f);
-      ASSERT_TRUE((*renderer)->render(scene, frame)) << "frame " << f;
+      ASSERT_TRUE(test_support::render(**renderer, scene, frame)) << "frame " << f;
     }
     EXPECT_EQ(frame.stats.frame_path, FramePath::repeated);
     scene.time = 0;
-    ASSERT_TRUE((*renderer)->render(scene, frame));
+    ASSERT_TRUE(test_support::render(**renderer, scene, frame));
     EXPECT_EQ(frame.hdr, own.hdr);
     renderer->reset();
     EXPECT_TRUE((*adopted)->messages().empty()) << (*adopted)->messages_text();
@@ -140,14 +140,14 @@ TEST_F(AdoptedDeviceTest, EachFrameIsCopiedIntoTheEnginesImage) {
                                          .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                                   VK_IMAGE_USAGE_SAMPLED_BIT});
   ASSERT_TRUE(target) << describe(target.error());
-  auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
+  auto renderer = test_support::create_renderer(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
   ASSERT_TRUE(renderer);
   const ImageTarget into{.image = target->handle(), .format = VK_FORMAT_R16G16B16A16_SFLOAT,
                          .width = uint32_t(scene.width), .height = uint32_t(scene.height),
                          .final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   RenderedFrame frame;
   for (int f = 0; f < 2; ++f) {
-    ASSERT_TRUE((*renderer)->render(scene, frame, {.target = into, .read_back = false}));
+    ASSERT_TRUE(test_support::render(**renderer, scene, frame, {.target = into, .read_back = false}));
     EXPECT_TRUE(frame.hdr.empty());
     EXPECT_TRUE(frame.ldr.empty());
   }
@@ -169,26 +169,26 @@ TEST_F(AdoptedDeviceTest, ATargetOfAnotherSizeIsScaledAndABadTargetIsAnError) {
                                          .usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                                   VK_IMAGE_USAGE_SAMPLED_BIT});
   ASSERT_TRUE(target);
-  auto renderer = Renderer::create(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
+  auto renderer = test_support::create_renderer(context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler});
   ASSERT_TRUE(renderer);
   RenderedFrame frame;
   ImageTarget into{.image = target->handle(), .format = VK_FORMAT_R8G8B8A8_UNORM, .width = 20, .height = 10,
                    .final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-  ASSERT_TRUE((*renderer)->render(scene, frame, {.target = into}));
+  ASSERT_TRUE(test_support::render(**renderer, scene, frame, {.target = into}));
   EXPECT_FALSE(frame.hdr.empty()) << "read back as well";
   auto texels = read_image(context(), *target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   ASSERT_TRUE(texels);
   EXPECT_TRUE(std::any_of(texels->begin(), texels->end(), [](std::byte b) { return b != std::byte{0}; }));
   into.format = VK_FORMAT_D32_SFLOAT;
-  auto depth = (*renderer)->render(scene, frame, {.target = into});
+  auto depth = test_support::render(**renderer, scene, frame, {.target = into});
   ASSERT_FALSE(depth);
   EXPECT_NE(depth.error().message.find("depth format"), std::string::npos) << depth.error().message;
   into.format = VK_FORMAT_BC1_RGB_UNORM_BLOCK;  // compressed: never a blit destination
-  auto refused = (*renderer)->render(scene, frame, {.target = into});
+  auto refused = test_support::render(**renderer, scene, frame, {.target = into});
   ASSERT_FALSE(refused);
   EXPECT_NE(refused.error().message.find("cannot blit"), std::string::npos) << refused.error().message;
   into.image = VK_NULL_HANDLE;
-  refused = (*renderer)->render(scene, frame, {.target = into});
+  refused = test_support::render(**renderer, scene, frame, {.target = into});
   ASSERT_FALSE(refused);
   EXPECT_NE(refused.error().message.find("no image"), std::string::npos);
 }

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "facet/runtime/renderer.h"
+#include "render_test_support.h"
 
 namespace facet::runtime::test_support {
 
@@ -120,9 +121,11 @@ inline GoldenComparison compare_with_golden(const RenderedFrame& frame, const st
 }
 
 // Writes tests/golden/<name>.png from `frame` (only under FACET_UPDATE_GOLDENS=1).
-inline Result<void, RenderError> update_golden(const RenderedFrame& frame, const std::string& name) {
+inline Result<void, Printed> update_golden(const RenderedFrame& frame, const std::string& name) {
   std::filesystem::create_directories(golden_dir());
-  return write_png(frame, (golden_dir() / (name + ".png")).string());
+  Diagnostics diags;
+  if (!write_png(frame, (golden_dir() / (name + ".png")).string(), diags)) return unexpected(printed(diags, {}));
+  return {};
 }
 
 }  // namespace facet::runtime::test_support

@@ -41,10 +41,12 @@ TEST_F(MaterialInstanceTest, AMatrixOfNoPropertyReachesTheMaterialsUniforms) {
   std::array<float, 16> matrix{};
   for (size_t i = 0; i < 16; ++i) matrix[i] = float(i);
   MaterialInstance(scene.objects[0].material).set_matrix("_Projector", matrix);
-  auto shader = test_support::with_compiler({}).shader_compiler->load(scene.objects[0].material.shader);
-  ASSERT_TRUE(shader) << shader.error();
-  auto material = make_material(shader->shader, scene.objects[0].material, scene.path);
-  ASSERT_TRUE(material) << material.error().message;
+  SourceMap sources;
+  Diagnostics diags;
+  auto shader = test_support::with_compiler({}).shader_compiler->load(scene.objects[0].material.shader, sources, diags);
+  ASSERT_TRUE(shader) << render_text(diags, sources);
+  auto material = make_material(shader->shader, scene.objects[0].material, scene.path, sources, diags);
+  ASSERT_TRUE(material) << render_text(diags, sources);
   const std::vector<float>* value = material->uniforms.find("_Projector");
   ASSERT_NE(value, nullptr);
   EXPECT_EQ(*value, std::vector<float>(matrix.begin(), matrix.end()));
@@ -55,14 +57,14 @@ TEST_F(MaterialInstanceTest, ColourKeywordAndCullEditsAreDrawnByAnUpdate) {
   ASSERT_TRUE(renderer);
   Scene scene = cubes();
   RenderedFrame frame;
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   EXPECT_NE(frame.draws[0].state.find("Cull Back"), std::string::npos) << frame.draws[0].state;
   MaterialInstance(scene.objects[0].material)
       .set_color("_Color", {0.2f, 0.9f, 0.3f, 1})
       .set_float("_Cull", 1)  // UnityEngine.Rendering.CullMode.Front
       .enable_keyword("_EMISSION")
       .set_color("_EmissionColor", {0.5f, 0.1f, 0.1f, 1});
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   EXPECT_EQ(frame.stats.frame_path, FramePath::updated) << frame.stats.prepared_because;
   RenderedFrame reference = fresh(scene);
   EXPECT_EQ(frame.hdr, reference.hdr);
@@ -81,15 +83,15 @@ TEST_F(MaterialInstanceTest, ATextureFileBroughtByAnUpdateIsLoadedOnceAndCounted
   ASSERT_TRUE(renderer);
   Scene scene = cubes();
   RenderedFrame frame;
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   SceneTexture checker{.name = std::string(FACET_SOURCE_DIR) + "/examples/textures/checker.png"};
   MaterialInstance(scene.objects[0].material).set_texture("_MainTex", checker);
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   EXPECT_EQ(frame.stats.frame_path, FramePath::updated) << frame.stats.prepared_because;
   EXPECT_EQ(frame.stats.textures_loaded, 1u);
   EXPECT_EQ(frame.hdr, fresh(scene).hdr);
   MaterialInstance(scene.objects[1].material).set_texture("_MainTex", checker);
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   EXPECT_EQ(frame.stats.textures_loaded, 0u) << "the file is loaded already";
   EXPECT_EQ(frame.hdr, fresh(scene).hdr);
 }
@@ -99,9 +101,9 @@ TEST_F(MaterialInstanceTest, AnUndeclaredPropertyIsTheRendersErrorWithItsPath) {
   ASSERT_TRUE(renderer);
   Scene scene = cubes();
   RenderedFrame frame;
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   MaterialInstance(scene.objects[1].material).set_float("_Colr", 1);
-  auto failed = renderer->render(scene, frame);
+  auto failed = test_support::render(*renderer, scene, frame);
   ASSERT_FALSE(failed);
   EXPECT_NE(failed.error().message.find("objects[1].material.properties._Colr"), std::string::npos)
       << failed.error().message;
@@ -116,14 +118,14 @@ TEST_F(MaterialInstanceTest, AnEnginesMeshDrawsAsTheSameMeshFromAName) {
   auto renderer = make_renderer();
   ASSERT_TRUE(renderer);
   RenderedFrame frame;
-  ASSERT_TRUE(renderer->render(given, frame));
+  ASSERT_TRUE(test_support::render(*renderer, given, frame));
   EXPECT_EQ(frame.stats.meshes_loaded, 1u) << "one upload for the two objects";
   EXPECT_EQ(frame.hdr, fresh(named).hdr);
   // Another MeshData is another mesh: uploaded by the update that brings it.
   auto sphere = std::make_shared<MeshData>(*builtin_mesh("sphere"));
   given.objects[1].mesh_data = sphere;
   named.objects[1].mesh = "sphere";
-  ASSERT_TRUE(renderer->render(given, frame));
+  ASSERT_TRUE(test_support::render(*renderer, given, frame));
   EXPECT_EQ(frame.stats.frame_path, FramePath::updated) << frame.stats.prepared_because;
   EXPECT_EQ(frame.stats.meshes_loaded, 1u);
   EXPECT_EQ(frame.hdr, fresh(named).hdr);
@@ -131,12 +133,12 @@ TEST_F(MaterialInstanceTest, AnEnginesMeshDrawsAsTheSameMeshFromAName) {
   // each frame does not pile up the old).
   EXPECT_GT(cube.use_count(), 1);
   given.objects[0].mesh_data = sphere;
-  ASSERT_TRUE(renderer->render(given, frame));
+  ASSERT_TRUE(test_support::render(*renderer, given, frame));
   EXPECT_EQ(frame.stats.frame_path, FramePath::updated);
   EXPECT_EQ(frame.stats.meshes_loaded, 0u);
   given.objects.clear();
   given.objects.push_back(named.objects[1]);
-  ASSERT_TRUE(renderer->render(given, frame));
+  ASSERT_TRUE(test_support::render(*renderer, given, frame));
   EXPECT_EQ(cube.use_count(), 1) << "only the test holds the cube";
   EXPECT_EQ(sphere.use_count(), 1) << "and the sphere";
 }

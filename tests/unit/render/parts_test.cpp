@@ -77,7 +77,8 @@ ir::StateValue literal(const char* text) { return {text, "", {}}; }
 ir::StateValue property(const char* name) { return {"", name, {}}; }
 
 TEST(RenderState, DefaultsAreUnitysDefaults) {
-  auto s = resolve_state({}, Material{});
+  Diagnostics diags;
+  auto s = resolve_state({}, Material{}, diags);
   ASSERT_TRUE(s);
   EXPECT_EQ(s->cull, VkCullModeFlags(VK_CULL_MODE_BACK_BIT));
   EXPECT_EQ(s->ztest, VK_COMPARE_OP_LESS_OR_EQUAL);
@@ -94,8 +95,9 @@ TEST(RenderState, LiteralsAndPropertiesResolve) {
   Material m;
   m.numbers["_Cull"] = {0, 0, 0, 0};       // CullMode.Off
   m.numbers["_DstBlend"] = {10, 0, 0, 0};  // BlendMode.OneMinusSrcAlpha
-  auto s = resolve_state(state, m);
-  ASSERT_TRUE(s) << s.error().message;
+  Diagnostics diags;
+  auto s = resolve_state(state, m, diags);
+  ASSERT_TRUE(s) << render_text(diags, {});
   EXPECT_EQ(s->cull, VkCullModeFlags(VK_CULL_MODE_NONE));
   EXPECT_FALSE(s->zwrite);
   EXPECT_TRUE(s->blend);
@@ -107,9 +109,12 @@ TEST(RenderState, LiteralsAndPropertiesResolve) {
 TEST(RenderState, MissingPropertyIsAnErrorNamingIt) {
   ir::RenderState state;
   state.ztest = property("_ZTest");
-  auto s = resolve_state(state, Material{});
+  Diagnostics diags;
+  auto s = resolve_state(state, Material{}, diags);
   ASSERT_FALSE(s);
-  EXPECT_EQ(s.error().message, "ZTest: the material has no number property '_ZTest'");
+  ASSERT_EQ(diags.size(), 1u);
+  EXPECT_EQ(diags.all()[0].id, DiagId::render_state_property);
+  EXPECT_EQ(diags.all()[0].message, "ZTest: the material has no number property '_ZTest'");
 }
 
 TEST(Meshes, BuiltinsFaceOutwardWithUnitNormalsAndOrthogonalTangents) {

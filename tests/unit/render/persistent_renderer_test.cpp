@@ -18,7 +18,7 @@ class PersistentRendererTest : public test_support::RendererTest {
  protected:
   static RenderedFrame draw(Renderer& renderer, const Scene& scene, FrameOptions options = {}) {
     RenderedFrame frame;
-    auto drawn = renderer.render(scene, frame, options);
+    auto drawn = test_support::render(renderer, scene, frame, options);
     EXPECT_TRUE(drawn) << drawn.error().message;
     return frame;
   }
@@ -198,7 +198,7 @@ TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
   Scene broken = scene;
   broken.objects[0].material.shader = "/nonexistent/Missing.shader";
   RenderedFrame frame;
-  auto failed = renderer->render(broken, frame);
+  auto failed = test_support::render(*renderer, broken, frame);
   ASSERT_FALSE(failed);
   EXPECT_NE(failed.error().message.find("objects[0].material.shader"), std::string::npos) << failed.error().message;
   RenderedFrame after = draw(*renderer, scene);
@@ -207,7 +207,7 @@ TEST_F(PersistentRendererTest, AFailedRenderDropsTheKeptFrame) {
 }
 
 TEST_F(PersistentRendererTest, ARendererForOneRenderKeepsNoSceneAndPreparesEachRender) {
-  auto renderer = Renderer::create(
+  auto renderer = test_support::create_renderer(
       context(), {.shader_compiler = test_support::with_compiler({}).shader_compiler, .one_render = true});
   ASSERT_TRUE(renderer);
   Scene scene = test_support::example_scene("unlit.json");
@@ -223,10 +223,10 @@ TEST_F(PersistentRendererTest, TheFrameBuffersOfTheCallerAreReused) {
   ASSERT_TRUE(renderer);
   Scene scene = test_support::example_scene("unlit.json");
   RenderedFrame frame;
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   const float* hdr = frame.hdr.data();
   const uint8_t* ldr = frame.ldr.data();
-  ASSERT_TRUE(renderer->render(scene, frame));
+  ASSERT_TRUE(test_support::render(*renderer, scene, frame));
   EXPECT_EQ(frame.hdr.data(), hdr);
   EXPECT_EQ(frame.ldr.data(), ldr);
   EXPECT_EQ(frame.stats.frame_ms.size(), 1u);

@@ -14,14 +14,14 @@ using test_support::write_scene;
 
 class PostTest : public test_support::LavapipeTest {
  protected:
-  Result<RenderedFrame, RenderError> render(const std::string& name, const std::string& post) {
+  Result<RenderedFrame, test_support::Printed> render(const std::string& name, const std::string& post) {
     std::string json = R"({"width": 48, "height": 32, "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0],
       "fov": 40, "near": 1, "far": 5, "clear_color": [1, 0, 0]}, "objects": [)" +
                        object_json("sphere", "Unlit.shader", R"(, "properties": {"_Color": [0, 0, 1]})") +
                        "], \"post\": " + post + "}";
     auto scene = parse_scene(json, write_scene(name, json));
     EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return unexpected(RenderError{"no scene"});
+    if (!scene) return unexpected(scene.error());
     return render_scene(context(), *scene, test_support::with_compiler({}));
   }
   static std::string step(int pass, const std::string& properties = "{}") {
@@ -81,7 +81,7 @@ TEST(PostScene, UnknownKeyInAStepIsAnErrorNamingIt) {
   std::string json = R"({"camera": {}, "objects": [], "post": [{"shader": "x.shader", "passs": 1}]})";
   auto scene = parse_scene(json, "s.json");
   ASSERT_FALSE(scene);
-  EXPECT_NE(scene.error().message.find("s.json: post[0].passs: unknown key"), std::string::npos)
+  EXPECT_TRUE(test_support::has_error_at(scene.error().message, "s.json", "post[0].passs: unknown key"))
       << scene.error().message;
 }
 

@@ -20,6 +20,83 @@
 
 namespace facet::runtime::test_support {
 
+// A load's or a render's errors printed as facet prints them
+// (render_text: "scene.json:3:7: error: ..."): the tests assert on what a
+// user reads. The diagnostics themselves are in `diags`.
+struct Printed {
+  std::string message;
+  Diagnostics diags;
+};
+
+// The messages alone, one a line.
+inline std::string message_of(const Diagnostics& diags) {
+  std::string text;
+  for (const Diagnostic& d : diags.all()) text += (text.empty() ? "" : "\n") + d.message;
+  return text;
+}
+
+// Whether `printed` (render_text's output) has an error located in a file
+// whose path ends with `file` ("<...>scene.json:3:7: error: ..."), its
+// message starting with `message`.
+inline bool has_error_at(const std::string& printed, const std::string& file, const std::string& message) {
+  std::istringstream lines(printed);
+  for (std::string line; std::getline(lines, line);) {
+    size_t at = line.find(file + ":");
+    if (at == std::string::npos) continue;
+    size_t i = at + file.size() + 1;
+    auto digits = [&] {
+      size_t start = i;
+      while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
+      return i > start;
+    };
+    if (!digits() || i >= line.size() || line[i++] != ':' || !digits()) continue;
+    const std::string expected = ": error: " + message;
+    if (line.compare(i, expected.size(), expected) == 0) return true;
+  }
+  return false;
+}
+
+inline Printed printed(const Diagnostics& diags, const SourceMap& sources) {
+  return {render_text(diags, sources, {.show_source_line = false}), diags};
+}
+
+// The runtime's calls with their errors printed (the same calls, with a
+// SourceMap and Diagnostics of their own).
+inline Result<Scene, Printed> load_scene(const std::string& path) {
+  SourceMap sources;
+  Diagnostics diags;
+  Result<Scene> scene = runtime::load_scene(path, sources, diags);
+  if (!scene) return unexpected(printed(diags, sources));
+  return std::move(*scene);
+}
+inline Result<Scene, Printed> parse_scene(const std::string& text, const std::string& path) {
+  SourceMap sources;
+  Diagnostics diags;
+  Result<Scene> scene = runtime::parse_scene(text, path, sources, diags);
+  if (!scene) return unexpected(printed(diags, sources));
+  return std::move(*scene);
+}
+inline Result<RenderedFrame, Printed> render_scene(Context& context, const Scene& scene, const RenderOptions& options) {
+  SourceMap sources;
+  Diagnostics diags;
+  Result<RenderedFrame> frame = runtime::render_scene(context, scene, options, sources, diags);
+  if (!frame) return unexpected(printed(diags, sources));
+  return std::move(*frame);
+}
+inline Result<std::unique_ptr<Renderer>, Printed> create_renderer(Context& context, RendererOptions options) {
+  Diagnostics diags;
+  Result<std::unique_ptr<Renderer>> renderer = Renderer::create(context, std::move(options), diags);
+  if (!renderer) return unexpected(printed(diags, {}));
+  return std::move(*renderer);
+}
+inline Result<void, Printed> render(Renderer& renderer, const Scene& scene, RenderedFrame& out,
+                                    const FrameOptions& options = {}) {
+  SourceMap sources;
+  Diagnostics diags;
+  if (!renderer.render(scene, out, options, sources, diags)) return unexpected(printed(diags, sources));
+  return {};
+}
+
 inline std::string example_shader(const std::string& name) {
   return std::string(FACET_SOURCE_DIR) + "/examples/shaders/" + name;
 }
@@ -70,7 +147,7 @@ inline RenderOptions with_compiler(RenderOptions options) {
 class RendererTest : public LavapipeTest {
  protected:
   static std::unique_ptr<Renderer> make_renderer() {
-    auto renderer = Renderer::create(context(), {.shader_compiler = with_compiler({}).shader_compiler});
+    auto renderer = create_renderer(context(), {.shader_compiler = with_compiler({}).shader_compiler});
     EXPECT_TRUE(renderer) << renderer.error().message;
     return renderer ? std::move(*renderer) : nullptr;
   }
@@ -145,11 +222,11 @@ inline std::string object_json(const std::string& mesh, const std::string& shade
 // is written to (relative paths in it resolve there).
 class RenderTest : public LavapipeTest {
  protected:
-  static Result<RenderedFrame, RenderError> try_render(const std::string& name, const std::string& json,
-                                                       const RenderOptions& options = {}) {
+  static Result<RenderedFrame, Printed> try_render(const std::string& name, const std::string& json,
+                                                   const RenderOptions& options = {}) {
     auto scene = parse_scene(json, write_scene(name, json));
     EXPECT_TRUE(scene) << scene.error().message;
-    if (!scene) return unexpected(RenderError{"the scene does not parse"});
+    if (!scene) return unexpected(scene.error());
     return render_scene(context(), *scene, with_compiler(options));
   }
   static RenderedFrame render(const std::string& name, const std::string& json, const RenderOptions& options = {}) {
@@ -172,3 +249,11 @@ inline size_t count_draws(const RenderedFrame& frame, const std::string& light_m
 }
 
 }  // namespace facet::runtime::test_support
+
+// The tests call these unqualified from facet::runtime; overloads of the
+// library's functions by their argument count.
+namespace facet::runtime {
+using test_support::load_scene;
+using test_support::parse_scene;
+using test_support::render_scene;
+}  // namespace facet::runtime

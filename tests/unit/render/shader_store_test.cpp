@@ -52,7 +52,7 @@ class ShaderStoreTest : public test_support::RenderTest {
     if (existed) fs::last_write_time(path, before + std::chrono::seconds(2));
   }
 
-  Result<RenderedFrame, RenderError> render_kept() {
+  Result<RenderedFrame, test_support::Printed> render_kept() {
     return render_scene(context(), scene_, test_support::with_compiler({.shaders = store_}));
   }
 

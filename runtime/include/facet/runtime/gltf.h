@@ -9,12 +9,12 @@
 //
 // Nothing of the file is trusted: the GLB container, every accessor, buffer
 // view, index, node reference and image URI is checked against what exists
-// before it is read, and the first problem comes back as a message that
+// before it is read, and the first problem comes back as a diagnostic (mesh_invalid) that
 // names the file and the glTF path of the bad value.
 //
-//   runtime::MeshError error;
-//   auto model = runtime::load_gltf("helmet.gltf", error, {.materials = true});
-//   if (!model) { fprintf(stderr, "%s\n", error.message.c_str()); return 1; }
+//   Diagnostics diags;
+//   auto model = runtime::load_gltf("helmet.gltf", diags, {.materials = true});
+//   if (!model) { fputs(render_text(diags, {}).c_str(), stderr); return 1; }
 //   runtime::MeshData all = runtime::merge_gltf_parts(*model);
 #pragma once
 
@@ -77,7 +77,7 @@ struct GltfModel {
 bool is_gltf_path(const std::string& path);
 
 // Reads a .gltf or .glb file; errors name the file ("<path>: meshes[0]...").
-std::optional<GltfModel> load_gltf(const std::string& path, MeshError& error, const GltfOptions& options = {});
+std::optional<GltfModel> load_gltf(const std::string& path, Diagnostics& diags, const GltfOptions& options = {});
 
 // The parts as one mesh: all of them, or those of `material` only.
 MeshData merge_gltf_parts(const GltfModel& model, std::optional<int> material = std::nullopt);

@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "facet/runtime/submission.h"  // submit_and_wait, with which uploads and read-backs run
 #include "facet/runtime/vk_error.h"
 
 namespace facet::runtime {
@@ -68,10 +69,6 @@ VkResultOf<Image> create_image(const Context& context, const ImageDesc& desc);
 // Bytes per texel of the formats the runtime uses; nullopt for others.
 std::optional<uint32_t> texel_bytes(VkFormat format);
 bool is_depth_format(VkFormat format);
-
-// Records commands into a fresh primary command buffer, submits it on the
-// context's queue and waits for it.
-VkResultOf<void> submit_and_wait(const Context& context, const std::function<void(VkCommandBuffer)>& record);
 
 // A pipeline barrier moving every mip and layer of `image` between layouts,
 // with access masks that cover what the runtime does in each layout.

@@ -14,16 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/result.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/uniforms.h"
 
 namespace facet::runtime {
-
-struct MaterialError {
-  std::string message;  // "<scene>: objects[0].material.properties._Colr: ..."
-};
 
 struct Material {
   std::string shader_name;
@@ -38,10 +35,12 @@ double srgb_to_linear(double c);
 double linear_to_srgb(double c);
 
 // Checks each scene property against the shader (name, and numbers vs
-// texture, count), and builds the material. `scene_path` prefixes messages.
-Result<Material, MaterialError> make_material(const ir::Shader& shader, const SceneMaterial& scene,
-                                              const std::string& scene_path);
-
+// texture, count), and builds the material. An error
+// (scene_material_property) is located at the property's value in the scene
+// file `scene_path` (read into `sources` if it is not there yet); a scene
+// with no file names the property's JSON path only.
+Result<Material> make_material(const ir::Shader& shader, const SceneMaterial& scene, const std::string& scene_path,
+                               SourceMap& sources, Diagnostics& diags);
 // A property used as render state ([_Cull] etc.): its value, if the material has it.
 std::optional<float> state_property(const Material& material, const std::string& name);
 

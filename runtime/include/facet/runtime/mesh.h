@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "facet/diagnostics.h"
+
 namespace facet::runtime {
 
 // One interleaved vertex. `zero` feeds stage inputs whose semantic has no
@@ -44,11 +46,9 @@ std::optional<MeshData> builtin_mesh(std::string_view name);
 const std::vector<std::string>& builtin_mesh_names();
 
 // An OBJ file (triangulated; normals computed when absent, UVs 0 when
-// absent). Errors name the file.
-struct MeshError {
-  std::string message;
-};
-std::optional<MeshData> load_obj(const std::string& path, MeshError& error);
+// absent). An error (mesh_invalid) names the file, and the line and column
+// of a bad line.
+std::optional<MeshData> load_obj(const std::string& path, Diagnostics& diags);
 
 // Per-vertex tangents from positions, normals and uv0 (Lengyel's method),
 // orthogonalised against the normal, w = +-1.

@@ -34,11 +34,10 @@ struct PipelineState {
   bool operator==(const PipelineState&) const = default;
 };
 
-struct StateError {
-  std::string message;  // "Cull [_CullMode]: the material has no property '_CullMode'"
-};
-
-Result<PipelineState, StateError> resolve_state(const ir::RenderState& state, const Material& material);
+// The pass's render state with each [_Prop] value read from the material; an
+// error (render_state_property) names the command and why: "Cull
+// [_CullMode]: the material has no property '_CullMode'".
+Result<PipelineState> resolve_state(const ir::RenderState& state, const Material& material, Diagnostics& diags);
 
 // A short text that identifies the state, for pipeline cache keys and --explain.
 std::string describe(const PipelineState& state);

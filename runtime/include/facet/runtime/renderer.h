@@ -6,16 +6,26 @@
 //
 // One frame, everything made for it and released after:
 //
-//   auto scene = runtime::load_scene("examples/scenes/unlit.json");
-//   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler()});
-//   runtime::write_png(*frame, "out.png");
+//   SourceMap sources;
+//   Diagnostics diags;
+//   auto scene = runtime::load_scene("examples/scenes/unlit.json", sources, diags);
+//   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler()},
+//                                      sources, diags);
+//   if (!frame) fputs(render_text(diags, sources).c_str(), stderr);
+//   runtime::write_png(*frame, "out.png", diags);
+//
+// Errors are facet's Diagnostics, as the compiler's are: each has an id
+// (scene_material_property, shader_unavailable, vulkan_failed, ...) and,
+// where it has a place, a span in `sources`: a shader's compile errors where
+// they are in the .shader and its includes, a material value where it is in
+// the scene file.
 //
 // An engine's loop: a Renderer keeps the frame it drew and draws the next
 // one by updating it (docs/library.md):
 //
-//   auto renderer = runtime::Renderer::create(*context, {.strict_variants = true});
+//   auto renderer = runtime::Renderer::create(*context, {.strict_variants = true}, diags);
 //   runtime::RenderedFrame frame;
-//   for (...) { change(scene); (*renderer)->render(scene, frame, {.records = false}); }
+//   for (...) { change(scene); (*renderer)->render(scene, frame, {.records = false}, sources, diags); }
 #pragma once
 
 #include <cstdint>
@@ -27,6 +37,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "facet/diagnostics.h"
 #include "facet/result.h"
 #include "facet/runtime/scene.h"
 #include "facet/runtime/shader_compiler.h"
@@ -152,11 +163,10 @@ struct RenderedFrame {
   RenderStats stats;
 };
 
-struct RenderError {
-  std::string message;
-};
-
-Result<RenderedFrame, RenderError> render_scene(Context& context, const Scene& scene, const RenderOptions& options);
+// One render of `scene` by a Renderer made for it (RendererOptions::one_render):
+// errors go to `diags`, located in `sources` (see Renderer::render).
+Result<RenderedFrame> render_scene(Context& context, const Scene& scene, const RenderOptions& options,
+                                   SourceMap& sources, Diagnostics& diags);
 
 struct RendererOptions {
   // Loads and compiles .shader files; empty: packages only (RenderOptions).
@@ -221,25 +231,34 @@ struct FrameOptions {
 // first. One render at a time; see docs/runtime.md.
 class Renderer {
  public:
-  static Result<std::unique_ptr<Renderer>, RenderError> create(Context& context, RendererOptions options = {});
+  // Errors (a ShaderStore of another Context, the command buffers) go to
+  // `diags`.
+  static Result<std::unique_ptr<Renderer>> create(Context& context, RendererOptions options, Diagnostics& diags);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
   // Draws `scene` into `out`, whose buffers are reused (nothing in it is
-  // kept: it is cleared first). On an error the kept frame is dropped: the
-  // next render prepares anew.
-  Result<void, RenderError> render(const Scene& scene, RenderedFrame& out, const FrameOptions& options = {});
+  // kept: it is cleared first). On an error the kept frame is dropped (the
+  // next render prepares anew) and `diags` gets the errors: located ones
+  // point into `sources`, to which the files they name are added (a
+  // shader's files, the scene file; a file already there under its path is
+  // used as it is there).
+  Result<void> render(const Scene& scene, RenderedFrame& out, const FrameOptions& options, SourceMap& sources,
+                      Diagnostics& diags);
 
  private:
   struct State;
   explicit Renderer(std::unique_ptr<State> state);
+  // render's work; its errors point into the ShaderLibrary's report_sources().
+  Result<void, Diagnostics> draw(const Scene& scene, RenderedFrame& out, const FrameOptions& options);
   std::unique_ptr<State> state_;
 };
 
-// Writes through a temporary file and a rename: no partial file on failure.
-Result<void, RenderError> write_png(const RenderedFrame& frame, const std::string& path);
-Result<void, RenderError> write_exr(const RenderedFrame& frame, const std::string& path);
+// Writes through a temporary file and a rename: no partial file on failure
+// (output_unwritable).
+Result<void> write_png(const RenderedFrame& frame, const std::string& path, Diagnostics& diags);
+Result<void> write_exr(const RenderedFrame& frame, const std::string& path, Diagnostics& diags);
 
 // One line per draw, as `facet render --explain` prints them.
 std::string explain_text(const RenderedFrame& frame);

@@ -4,8 +4,10 @@
 // (property names and types) is checked when the renderer binds materials,
 // with the same kind of path.
 //
-//   auto scene = runtime::load_scene("examples/scenes/unlit.json");
-//   if (!scene) { fprintf(stderr, "%s\n", scene.error().message.c_str()); return 1; }
+//   SourceMap sources;
+//   Diagnostics diags;
+//   auto scene = runtime::load_scene("examples/scenes/unlit.json", sources, diags);
+//   if (!scene) { fputs(render_text(diags, sources).c_str(), stderr); return 1; }
 #pragma once
 
 #include <array>
@@ -15,16 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "facet/diagnostics.h"
 #include "facet/result.h"
 #include "facet/runtime/mesh.h"
 
 namespace facet::runtime {
-
-// "scene.json: objects[2].material.properties._Color: expected 4 numbers",
-// or "scene.json:3:7: <JSON syntax error>".
-struct SceneError {
-  std::string message;
-};
 
 using Vec3 = std::array<float, 3>;
 using Vec4 = std::array<float, 4>;
@@ -241,8 +238,14 @@ struct Scene {
   bool operator==(const Scene&) const = default;
 };
 
-// Parses `text`; `path` names the file in messages and anchors relative paths.
-Result<Scene, SceneError> parse_scene(const std::string& text, const std::string& path);
-Result<Scene, SceneError> load_scene(const std::string& path);
+// Parses `text`; `path` names the file in messages and anchors relative
+// paths. The text is added to `sources` and each error is located in it: a
+// syntax error where it is (scene_json_syntax), a value the reader rejects
+// at that value, with its JSON path in the message
+// ("objects[2].material.properties._Color: expected 4 numbers",
+// scene_invalid).
+Result<Scene> parse_scene(const std::string& text, const std::string& path, SourceMap& sources, Diagnostics& diags);
+// Reads the file first (scene_unreadable: missing, unreadable, over 64 MiB).
+Result<Scene> load_scene(const std::string& path, SourceMap& sources, Diagnostics& diags);
 
 }  // namespace facet::runtime

@@ -37,13 +37,15 @@ struct CompiledPassVariant {
 };
 
 struct ShaderCompiler {
-  // Loads a .shader; the error is the compiler's messages as text.
-  std::function<Result<ShaderSource, std::string>(const std::string& path)> load;
+  // Loads a .shader. On failure the compiler's diagnostics are in `diags`,
+  // located in `report` (the files they point into are added to it).
+  std::function<Result<ShaderSource>(const std::string& path, SourceMap& report, Diagnostics& diags)> load;
   // Compiles one pass of a loaded shader (`pass`: SelectedPass::pass, the
   // pass's index in its SubShader) with exactly these keywords; `sources`
-  // gains the files the compile reads.
-  std::function<Result<CompiledPassVariant, std::string>(const ir::Shader& shader, SourceMap& sources, size_t pass,
-                                                         const std::vector<std::string>& keywords)>
+  // gains the files the compile reads, and the diagnostics of a failure
+  // point into it.
+  std::function<Result<CompiledPassVariant>(const ir::Shader& shader, SourceMap& sources, size_t pass,
+                                            const std::vector<std::string>& keywords, Diagnostics& diags)>
       compile;
   // The .shader that declares the shader `name` (`Shader "name"`), searched
   // for in ShaderCompilerOptions::shader_dirs: where the renderer compiles a
