@@ -96,7 +96,8 @@ class Diagnostics {
 };
 
 // The same diagnostics pointing into `to`: each file a span, note, fix-it
-// or include-stack entry names in `from` is added to `to` (once per path).
+// or include-stack entry names in `from` is added to `to`, unless `to`
+// already has it with the same path and text (SourceMap::add_file_version).
 // For a caller that owns its SourceMap and receives diagnostics made against
 // another one (a render's, a failed load's).
 Diagnostics rebase_diagnostics(const Diagnostics& diags, const SourceMap& from, SourceMap& to);

@@ -47,6 +47,10 @@ class SourceMap {
   // The file already added under `path`, else a new one: atomic, so two
   // threads adding the same include get one FileId.
   FileId add_file_once(std::string path, std::string text);
+  // The file already added under `path` with exactly this text (the newest
+  // such), else a new one: a file edited since it was added gets a FileId of
+  // its own, so that spans into the new text never point into the old.
+  FileId add_file_version(std::string path, std::string text);
 
   size_t file_count() const;
   const std::string& path(FileId id) const;

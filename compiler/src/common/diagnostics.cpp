@@ -72,7 +72,7 @@ Diagnostics rebase_diagnostics(const Diagnostics& diags, const SourceMap& from, 
       return;
     }
     auto [it, added] = moved.try_emplace(span.file, kNoFile);
-    if (added) it->second = to.add_file_once(from.path(span.file), from.text(span.file));
+    if (added) it->second = to.add_file_version(from.path(span.file), from.text(span.file));
     span.file = it->second;
   };
   Diagnostics out;

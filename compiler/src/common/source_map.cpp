@@ -73,6 +73,16 @@ const std::string& SourceMap::text(FileId id) const {
   return f ? f->text : none;
 }
 
+FileId SourceMap::add_file_version(std::string path, std::string text) {
+  {
+    std::lock_guard lock(storage_->mutex);
+    for (size_t i = storage_->files.size(); i-- > 0;) {
+      if (storage_->files[i]->path == path && storage_->files[i]->text == text) return FileId(i);
+    }
+  }
+  return add_file(std::move(path), std::move(text));
+}
+
 std::optional<FileId> SourceMap::find(std::string_view path) const {
   std::lock_guard lock(storage_->mutex);
   for (size_t i = 0; i < storage_->files.size(); ++i) {

@@ -69,15 +69,16 @@ Result<std::vector<CubeMips>, Diagnostics> render_probes(Context& context, const
     CubeMips cube{size, {std::vector<float>(size_t(size) * size * 6 * 4)}};
     for (size_t face = 0; face < 6; ++face) {
       seen.camera.transform = Transform{.position = probe.position, .rotation = kFaceRotations[face]};
-      // The faces' renders share this render's library (RenderOptions::shaders
-      // is the Renderer's store), and so the text its errors point into.
-      SourceMap unshared;
-      SourceMap& report = shaders->library ? shaders->library->report_sources() : unshared;
+      SourceMap face_sources;
       Diagnostics face_diags;
-      Result<RenderedFrame> frame = render_scene(context, seen, face_options, report, face_diags);
+      Result<RenderedFrame> frame = render_scene(context, seen, face_options, face_sources, face_diags);
       if (!frame) {
+        // Located in the store's library's map, which this render's errors point into.
+        if (!shaders->library) return unexpected(face_diags);  // no library: nothing was loaded, nothing has a place
+        SourceMap& report = shaders->library->report_sources();
         return unexpected(scene_error(report, scene, probe.json_path, DiagId::render_invalid,
-                                      fmt::format("rendering the probe's face {}", face), face_diags));
+                                      fmt::format("rendering the probe's face {}", face),
+                                      rebase_diagnostics(face_diags, face_sources, report)));
       }
       float* out = &cube.mips[0][face * size_t(size) * size * 4];
       for (size_t i = 0; i < size_t(size) * size * 4; ++i) out[i] = frame->hdr[i] * (i % 4 == 3 ? 1.0f : probe.intensity);

@@ -29,7 +29,8 @@ struct Loader {
   Result<const MeshData*, Diagnostics> engine_mesh(const SceneObject& object) {
     const MeshData& data = *object.mesh_data;
     auto bad = [&](const std::string& why) {
-      return unexpected(render_error(fmt::format("{}: {}.mesh_data: {}", scene.path, object.json_path, why)));
+      return unexpected(
+          render_error(fmt::format("{}: {}.mesh_data: {}", scene.path, object.json_path, why), DiagId::mesh_invalid));
     };
     if (data.vertices.empty() || data.indices.empty()) return bad("no vertices or no indices");
     if (data.indices.size() % 3 != 0) return bad(fmt::format("{} indices: not whole triangles", data.indices.size()));

@@ -89,7 +89,8 @@ class ShaderLibrary {
   const std::string* on_demand_source(ShaderAsset& asset, std::string& why);
   // The text the diagnostics of this library's failures point into: the
   // files of a shader that did not load or compile, a scene file a material
-  // error is located in. Grows by the files of failures only.
+  // error is located in. Grows by the files of failures only (one copy of a
+  // file per edited version of it that failed).
   SourceMap& report_sources() { return report_; }
   // The development layer, or null when only packages are drawn.
   const ShaderCompiler* compiler() const { return compiler_.get(); }

@@ -102,13 +102,18 @@ std::optional<JsonExtent> find(Scanner& s, const std::vector<Step>& steps, size_
   if (depth > kMaxDepth) return std::nullopt;
   if (const std::string* key = std::get_if<std::string>(&steps[next])) {
     if (!s.take('{') || s.take('}')) return std::nullopt;
+    // Of a key given twice the reader keeps the last value: so does this.
+    std::optional<size_t> last;
     do {
       std::string name;
       if (!s.string(&name) || !s.take(':')) return std::nullopt;
-      if (name == *key) return find(s, steps, next + 1, depth + 1);
+      s.skip_space();
+      if (name == *key) last = s.at;
       if (!s.value(depth + 1)) return std::nullopt;
     } while (s.take(','));
-    return std::nullopt;
+    if (!last) return std::nullopt;
+    s.at = *last;
+    return find(s, steps, next + 1, depth + 1);
   }
   const size_t index = std::get<size_t>(steps[next]);
   if (!s.take('[') || s.take(']')) return std::nullopt;
@@ -120,31 +125,42 @@ std::optional<JsonExtent> find(Scanner& s, const std::vector<Step>& steps, size_
   return std::nullopt;
 }
 
+// The scene file's text; nullopt when it is not a regular file of at most
+// a scene's size (load_scene's 64 MiB) or cannot be read.
+std::optional<std::string> read_scene_text(const std::string& path) {
+  constexpr uintmax_t kMaxSceneBytes = uintmax_t(64) << 20;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  if (uintmax_t size = std::filesystem::file_size(path, ec); ec || size > kMaxSceneBytes) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) return std::nullopt;
+  return std::move(text).str();
+}
+
 }  // namespace
 
 std::optional<JsonExtent> locate_json_value(std::string_view text, std::string_view path) {
   std::optional<std::vector<Step>> steps = parse_path(path);
   if (!steps) return std::nullopt;
   Scanner scanner{text};
+  if (text.starts_with("\xEF\xBB\xBF")) scanner.at = 3;  // a UTF-8 byte order mark, which the reader skips
   return find(scanner, *steps, 0, 0);
 }
 
 SourceSpan scene_value_span(SourceMap& sources, const std::string& scene_path, std::string_view path) {
   if (scene_path.empty()) return {};
-  std::optional<FileId> file = sources.find(scene_path);
-  if (!file) {
-    constexpr uintmax_t kMaxSceneBytes = uintmax_t(64) << 20;  // as load_scene's
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(scene_path, ec) ||
-        std::filesystem::file_size(scene_path, ec) > kMaxSceneBytes) {
-      return {};
-    }
-    std::ifstream in(scene_path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) return {};
-    file = sources.add_file_once(scene_path, text.str());
+  // Read now, so that a scene edited since it was loaded is located in its
+  // text of today (a version `sources` holds already is reused); a file that
+  // cannot be read is located in the text `sources` has under its name.
+  std::optional<FileId> file;
+  if (std::optional<std::string> text = read_scene_text(scene_path)) {
+    file = sources.add_file_version(scene_path, std::move(*text));
+  } else {
+    file = sources.find(scene_path);
   }
+  if (!file) return {};
   std::optional<JsonExtent> extent = locate_json_value(sources.text(*file), path);
   if (!extent) return {};
   return {*file, uint32_t(extent->begin), uint32_t(extent->end)};

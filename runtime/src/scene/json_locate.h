@@ -19,9 +19,11 @@ struct JsonExtent {
 // the text has no such value or is not JSON that far.
 std::optional<JsonExtent> locate_json_value(std::string_view text, std::string_view path);
 
-// The span of the value at `path` in the scene file `scene_path`: the file
-// already in `sources`, else read now (a scene built in code, or a file gone
-// or grown past a scene's size, has no location: an empty span).
+// The span of the value at `path` in the scene file `scene_path`: its text
+// read now and added to `sources` unless that text is there already under
+// its name; a file that cannot be read is located in what `sources` holds
+// under its name. A scene built in code (no path) has no location: an empty
+// span.
 SourceSpan scene_value_span(SourceMap& sources, const std::string& scene_path, std::string_view path);
 
 }  // namespace facet::runtime

@@ -382,7 +382,7 @@ struct Reader {
     }
     Diagnostics mesh_diags;
     std::optional<GltfModel> model = load_gltf(o.mesh, mesh_diags, {.materials = true});
-    if (!model) throw Bad{join(path, "mesh"), mesh_diags.all().front().message};
+    if (!model) throw Bad{join(path, "mesh"), mesh_diags.all().empty() ? "does not load" : mesh_diags.all().front().message};
     for (const GltfPart& part : model->parts) {
       SceneObject each = o;
       each.gltf_material = part.material;
@@ -694,11 +694,15 @@ Result<Scene> parse_scene(const std::string& text, const std::string& path, Sour
     scene.path = path;
     return scene;
   } catch (const Bad& bad) {
-    SourceSpan span{file, 0, 0};
+    // Where the reader's path cannot be found again (a key holding '.' or
+    // '['), the message names the file instead of pointing at line 1.
+    SourceSpan span;
+    std::string where = path + ": ";
     if (std::optional<JsonExtent> value = locate_json_value(text, bad.path)) {
       span = {file, uint32_t(value->begin), uint32_t(value->end)};
+      where.clear();
     }
-    diags.add(DiagId::scene_invalid, span, bad.path.empty() ? bad.what : bad.path + ": " + bad.what);
+    diags.add(DiagId::scene_invalid, span, where + (bad.path.empty() ? bad.what : bad.path + ": " + bad.what));
   } catch (const std::bad_alloc&) {
     diags.add(DiagId::scene_unreadable, SourceSpan{file, 0, 0}, "not enough memory to read the scene");
   } catch (const std::exception& e) {

@@ -54,6 +54,7 @@ Submission& Submission::operator=(Submission&& other) noexcept {
   commands_ = std::exchange(other.commands_, VK_NULL_HANDLE);
   fence_ = std::exchange(other.fence_, VK_NULL_HANDLE);
   used_ = std::exchange(other.used_, false);
+  pending_ = std::exchange(other.pending_, false);
   return *this;
 }
 
@@ -61,6 +62,7 @@ Submission::~Submission() { release(); }
 
 void Submission::release() {
   if (!device_) return;
+  if (pending_) vkQueueWaitIdle(queue_);  // the fence and command buffer may not go while the queue uses them
   if (fence_) vkDestroyFence(device_, fence_, nullptr);
   if (owns_pool_ && pool_) {
     vkDestroyCommandPool(device_, pool_, nullptr);  // frees its command buffer
@@ -73,6 +75,7 @@ void Submission::release() {
 VkResultOf<void> Submission::submit(const std::function<void(VkCommandBuffer)>& record, const SubmitOptions& options) {
   // Only a pool of its own lets the buffer be reset; the context's transient one serves a single submission.
   if (used_ && !owns_pool_) return vk_failure(VkErrorCode::invalid_argument, "a one-off submission submitted twice");
+  if (pending_) return vk_failure(VkErrorCode::submit_failed, "the previous submission did not finish");
   VkResult r = used_ ? vkResetCommandBuffer(commands_, 0) : VK_SUCCESS;
   if (r == VK_SUCCESS) r = vkResetFences(device_, 1, &fence_);
   used_ = true;
@@ -90,9 +93,11 @@ VkResultOf<void> Submission::submit(const std::function<void(VkCommandBuffer)>& 
   r = vkQueueSubmit(queue_, 1, &submit, fence_);
   if (options.submitted) *options.submitted = std::chrono::steady_clock::now();
   if (r != VK_SUCCESS) return vk_failure(VkErrorCode::submit_failed, "vkQueueSubmit failed", r);
+  pending_ = true;
   if (r = vkWaitForFences(device_, 1, &fence_, VK_TRUE, options.timeout_ns); r != VK_SUCCESS) {
     return vk_failure(VkErrorCode::submit_failed, "waiting for the queue failed", r);
   }
+  pending_ = false;
   return {};
 }
 

@@ -124,6 +124,18 @@ TEST(DiagnosticsRebaseTest, SpansNotesAndIncludeStacksPointIntoTheNewMapAtTheSam
   (void)unused;
 }
 
+TEST(DiagnosticsRebaseTest, AFileEditedSinceTheNewMapGotItIsAddedAgain) {
+  SourceMap from, to;
+  FileId old_text = to.add_file("a.shader", "one\n");
+  FileId edited = from.add_file("a.shader", "one\ntwo\nthree\n");
+  Diagnostics diags;
+  diags.add(DiagId::render_invalid, {edited, 8, 13}, "on line 3");
+  Diagnostics moved = rebase_diagnostics(diags, from, to);
+  EXPECT_NE(moved.all()[0].span.file, old_text);
+  EXPECT_EQ(to.line_column(moved.all()[0].span.file, moved.all()[0].span.begin).line, 3u);
+  EXPECT_EQ(rebase_diagnostics(diags, from, to).all()[0].span.file, moved.all()[0].span.file);  // added once
+}
+
 TEST(DiagnosticsRebaseTest, ASpanPastTheOldMapLosesItsPlaceRatherThanPointingElsewhere) {
   SourceMap from, to;
   Diagnostics diags;

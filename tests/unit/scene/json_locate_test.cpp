@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace facet::runtime {
@@ -36,6 +40,14 @@ TEST(JsonLocate, StringsWithQuotesAndBracketsAreSkippedWhole) {
   EXPECT_EQ(value_at(kScene, "objects[1].material.properties._Name"), R"("x \"q\" ]")");
 }
 
+TEST(JsonLocate, OfAKeyGivenTwiceTheLastValueIsTheOneTheReaderKept) {
+  EXPECT_EQ(value_at(R"({"time": 1, "time": "noon"})", "time"), "\"noon\"");
+}
+
+TEST(JsonLocate, AByteOrderMarkIsSkipped) {
+  EXPECT_EQ(value_at("\xEF\xBB\xBF{\"width\": 7}", "width"), "7");
+}
+
 TEST(JsonLocate, TheEmptyPathIsTheDocument) {
   EXPECT_EQ(value_at("  [1, 2]  ", ""), "[1, 2]");
 }
@@ -64,6 +76,23 @@ TEST(JsonLocate, ASceneValueSpanReadsTheFileOnceIntoTheSourceMap) {
   EXPECT_EQ(span.file, file);
   EXPECT_EQ(sources.line_column(file, span.begin).line, 6u);
   EXPECT_EQ(sources.file_count(), 1u);
+}
+
+TEST(JsonLocate, AnEditedSceneFileIsLocatedInItsNewTextUnderANewFileId) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("facet_json_locate." + std::to_string(::getpid()) + ".json")).string();
+  std::ofstream(path) << kScene;
+  SourceMap sources;
+  SourceSpan before = scene_value_span(sources, path, "width");
+  ASSERT_TRUE(before.has_location());
+  EXPECT_EQ(scene_value_span(sources, path, "width").file, before.file);  // the same text: the same file
+  std::ofstream(path, std::ios::trunc) << "{\n\n  \"width\": 128}";
+  SourceSpan after = scene_value_span(sources, path, "width");
+  ASSERT_TRUE(after.has_location());
+  EXPECT_NE(after.file, before.file);
+  EXPECT_EQ(sources.line_column(after.file, after.begin).line, 3u);
+  EXPECT_EQ(sources.text(after.file).substr(after.begin, after.end - after.begin), "128");
+  std::filesystem::remove(path);
 }
 
 }  // namespace

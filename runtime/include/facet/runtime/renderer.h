@@ -11,7 +11,7 @@
 //   auto scene = runtime::load_scene("examples/scenes/unlit.json", sources, diags);
 //   auto frame = runtime::render_scene(*context, *scene, {.shader_compiler = runtime::make_shader_compiler()},
 //                                      sources, diags);
-//   if (!frame) fputs(render_text(diags, sources).c_str(), stderr);
+//   if (!frame) { fputs(render_text(diags, sources).c_str(), stderr); return 1; }
 //   runtime::write_png(*frame, "out.png", diags);
 //
 // Errors are facet's Diagnostics, as the compiler's are: each has an id
@@ -242,8 +242,8 @@ class Renderer {
   // kept: it is cleared first). On an error the kept frame is dropped (the
   // next render prepares anew) and `diags` gets the errors: located ones
   // point into `sources`, to which the files they name are added (a
-  // shader's files, the scene file; a file already there under its path is
-  // used as it is there).
+  // shader's files, the scene file) unless it holds them with the same text
+  // already (SourceMap::add_file_version).
   Result<void> render(const Scene& scene, RenderedFrame& out, const FrameOptions& options, SourceMap& sources,
                       Diagnostics& diags);
 

@@ -36,6 +36,9 @@ class Submission {
   ~Submission();
 
   // Records with `record`, submits, and waits until the queue has run it.
+  // A wait that fails or times out leaves the work on the queue: the
+  // Submission refuses further submissions, and its destruction waits for
+  // the queue before freeing what the work uses.
   VkResultOf<void> submit(const std::function<void(VkCommandBuffer)>& record, const SubmitOptions& options = {});
 
  private:
@@ -51,6 +54,7 @@ class Submission {
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   bool used_ = false;
+  bool pending_ = false;  // submitted and not known to be done
 };
 
 // One submission: a command buffer from the context's own pool, recorded
