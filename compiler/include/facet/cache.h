@@ -19,7 +19,9 @@
 //   else stores.store_entry(key, compiled);
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -136,10 +138,17 @@ class HttpCache {
 
   StoredBytes load_bytes(const std::string& key) const;
   bool store_bytes(const std::string& key, std::string_view bytes) const;
+  // Whether a request found the server not answering (no connection, or no
+  // answer within the timeout): from then on, for this object and its
+  // copies, every load is a miss and every store is skipped at once, so a
+  // server that accepts connections and never answers costs one timeout,
+  // not one a program.
+  bool down() const;
 
  private:
   std::string base_url_;  // without a trailing '/'
   long timeout_ms_;
+  std::shared_ptr<std::atomic<bool>> down_;
 };
 
 // Lower-case hex SHA-256 (the bazel-remote digest).

@@ -58,7 +58,7 @@ struct CompileOptions {
   // renderer never enables (lightmaps, shadowmask, vertex lights); they are
   // counted and reported either way (facetc --build-unreachable).
   bool build_unreachable = false;
-  // Worker threads (0: one per core). The package bytes do not depend on it.
+  // Worker threads (0: one per core; more than the cores: one per core). The package bytes do not depend on it.
   unsigned jobs = 0;
   // The compile cache folder (facet/cache.h); empty: no cache.
   std::string cache_dir;

@@ -239,8 +239,33 @@ class LogMapper {
     return pos;
   }
 
+  // The `#include` of `header` in the program's own text, for a message
+  // whose file glslang names after a `#line "name"` directive (no file of
+  // the SourceMap): the span of the name, or none.
+  SourceSpan include_in_program(const std::string& header) const {
+    std::vector<const ir::SourceChunk*> chunks;
+    for (const ir::SourceChunk& c : ctx_.program.includes) chunks.push_back(&c);
+    chunks.push_back(&ctx_.program.body);
+    for (const ir::SourceChunk* chunk : chunks) {
+      if (!chunk->span.has_location()) continue;
+      const std::string& text = chunk->text;
+      for (size_t at = text.find("#include"); at != std::string::npos; at = text.find("#include", at + 1)) {
+        size_t eol = std::min(text.find('\n', at), text.size());
+        size_t name = text.find(header, at);
+        if (name == std::string::npos || name >= eol) continue;
+        uint32_t begin = chunk->span.begin + uint32_t(name);
+        return {chunk->span.file, begin, begin + uint32_t(header.size())};
+      }
+    }
+    return {};
+  }
+
   void report_missing_include(const LogMessage& m, SourceSpan span, FileId file) {
     std::string header(trim(std::string_view(m.text).substr(kIncludeFailure.size())));
+    if (!span.has_location() && !header.empty()) {
+      span = include_in_program(header);
+      file = span.has_location() ? span.file : kNoFile;
+    }
     if (span.has_location() && span.begin > 0 && file != kNoFile) {
       const std::string& text = ctx_.sources.text(file);
       // Widen the span over the quotes or angle brackets around the name.

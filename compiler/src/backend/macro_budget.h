@@ -14,8 +14,8 @@
 //
 // The estimate is an upper bound of the real expansion for the macros it
 // knows (each definition counts at its largest, whether or not an #if
-// skips it; a macro that names itself is not expanded again, as in the
-// preprocessor). It knows the macros of the texts read so far: the
+// skips it, until an #undef outside every #if of its text; a macro that
+// names itself is not expanded again, as in the preprocessor). It knows the macros of the texts read so far: the
 // program's own chunks are read before glslang starts, so a use in them of
 // a macro that only an included file defines is counted as one token; the
 // per-program time limit (worker.h) is the backstop for that case.
@@ -84,6 +84,7 @@ class MacroBudget {
 
  private:
   std::optional<MacroExcess> define(std::span<const Token> line);
+  void undefine(std::string_view name);
   std::optional<MacroExcess> add_code(std::span<const Token> code);
   Size measure(Definition& d, int& depth);
   size_t measure_one(const std::vector<std::string_view>& tokens, size_t i, size_t end, const Definition* owner,

@@ -190,7 +190,8 @@ namespace {
 // analyze_program, on the worker thread.
 Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& program,
                                 const std::vector<std::string>& keywords, const BackendOptions& options,
-                                SourceMap& sources, Diagnostics& diags, const CrashIsolation* isolation) {
+                                SourceMap& sources, Diagnostics& diags, const CrashIsolation* isolation,
+                                const std::shared_ptr<IncludeScanCache>& scan_cache) {
   const FileId home = ir::program_file(shader, program);
   std::string path = home != kNoFile && home < sources.file_count() ? sources.path(home) : "";
   std::string stdlib = options.stdlib_dir.empty() ? default_stdlib_dir() : options.stdlib_dir;
@@ -208,7 +209,7 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
   };
   AssembledSource source;
   source = assemble_source(program, Stage::fragment, keywords, options, path);
-  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib, diags);
+  std::unique_ptr<FileIncluder> includer = checked_includer(program, source, options, stdlib, diags, scan_cache);
   if (!includer) return failure("input limit");
   GlslangOutput out = parse(program, source, *includer);
   // Calls fxc accepts by truncating a wider vector argument: analysed with
@@ -218,7 +219,8 @@ Result<ProgramAnalysis> analyze(const ir::Shader& shader, const ir::Program& pro
     if (!cast_rejected_calls(cast, source.root_name, parse_info_log(out.parse_log), includer->returned_texts()).empty()) {
       AssembledSource cast_source;
       Diagnostics refused;  // the program's text passed these checks before its casts
-      std::unique_ptr<FileIncluder> cast_includer = checked_includer(cast, cast_source, options, stdlib, refused);
+      std::unique_ptr<FileIncluder> cast_includer =
+          checked_includer(cast, cast_source, options, stdlib, refused, scan_cache);
       if (!cast_includer) return failure("input limit");
       GlslangOutput cast_out = parse(cast, cast_source, *cast_includer);
       if (cast_out.ok) {
@@ -246,8 +248,11 @@ Result<ProgramAnalysis> Backend::analyze_program(const ir::Shader& shader, const
   std::optional<Result<ProgramAnalysis>> result;
   std::string timeout = fmt::format("facet: error: analysing a program took longer than {} s (--time-limit)\n",
                                     options.limits.time_limit_s);
-  run_on_worker([&] { result = analyze(shader, program, keywords, options, sources, diags, isolation_.get()); },
-                options.limits.time_limit_s, [&] { return timeout; });
+  run_on_worker(
+      [&, scan_cache = scan_cache_] {
+        result = analyze(shader, program, keywords, options, sources, diags, isolation_.get(), scan_cache);
+      },
+      options.limits.time_limit_s, [&] { return timeout; });
   return std::move(*result);
 }
 

@@ -48,8 +48,18 @@ size_t read_body(char* buffer, size_t size, size_t count, void* user) {
   return n;
 }
 
-// GET: the body on 200, else nullopt; `too_large` when a 200's body was longer than `limit`.
-std::optional<std::string> http_get(const std::string& url, long timeout_ms, uint64_t limit, bool& too_large) {
+// The server did not answer (no connection, or none within the timeout), as
+// opposed to answering "no".
+bool unanswered(CURLcode rc) {
+  return rc == CURLE_OPERATION_TIMEDOUT || rc == CURLE_COULDNT_CONNECT || rc == CURLE_COULDNT_RESOLVE_HOST ||
+         rc == CURLE_COULDNT_RESOLVE_PROXY || rc == CURLE_GOT_NOTHING || rc == CURLE_RECV_ERROR ||
+         rc == CURLE_SEND_ERROR;
+}
+
+// GET: the body on 200, else nullopt; `too_large` when a 200's body was
+// longer than `limit`; `server_down` when the server did not answer.
+std::optional<std::string> http_get(const std::string& url, long timeout_ms, uint64_t limit, bool& too_large,
+                                    bool& server_down) {
   init_curl_once();
   CURL* curl = curl_easy_init();
   if (!curl) return std::nullopt;
@@ -68,11 +78,12 @@ std::optional<std::string> http_get(const std::string& url, long timeout_ms, uin
   // Only a 200's body is a value: a miss's error page (nginx sends 153 bytes
   // of HTML with its 404) may be longer than a value may be, and is a miss.
   too_large = status == 200 && (down.too_large || rc == CURLE_FILESIZE_EXCEEDED);
+  if (unanswered(rc)) server_down = true;
   if (rc != CURLE_OK || status != 200) return std::nullopt;
   return std::move(down.body);
 }
 
-bool http_put(const std::string& url, std::string_view bytes, long timeout_ms) {
+bool http_put(const std::string& url, std::string_view bytes, long timeout_ms, bool& server_down) {
   init_curl_once();
   CURL* curl = curl_easy_init();
   if (!curl) return false;
@@ -91,6 +102,7 @@ bool http_put(const std::string& url, std::string_view bytes, long timeout_ms) {
   long status = 0;
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &status);
   curl_easy_cleanup(curl);
+  if (unanswered(rc)) server_down = true;
   return rc == CURLE_OK && status >= 200 && status < 300;
 }
 
@@ -110,21 +122,27 @@ std::string sha256_hex(std::string_view bytes) {
   return hex;
 }
 
-HttpCache::HttpCache(std::string base_url, long timeout_ms) : base_url_(std::move(base_url)), timeout_ms_(timeout_ms) {
+HttpCache::HttpCache(std::string base_url, long timeout_ms)
+    : base_url_(std::move(base_url)), timeout_ms_(timeout_ms), down_(std::make_shared<std::atomic<bool>>(false)) {
   while (!base_url_.empty() && base_url_.back() == '/') base_url_.pop_back();
 }
+
+bool HttpCache::down() const { return down_->load(); }
 
 StoredBytes HttpCache::load_bytes(const std::string& key) const {
   const std::string ac = base_url_ + "/ac/" + sha256_hex(key);
   StoredBytes out{.location = fmt::format("{} (remote {})", key, ac)};
-  bool too_large = false;
-  auto digest = http_get(ac, timeout_ms_, 64, too_large);
+  if (down()) return out;  // a miss: the server did not answer before
+  bool too_large = false, server_down = false;
+  auto digest = http_get(ac, timeout_ms_, 64, too_large, server_down);
+  if (server_down) down_->store(true);
   if (!digest && !too_large) return out;  // a miss, or the server is down
   if (!digest || !is_hex64(*digest)) {
     out.problem = "the action-cache value is not a digest";
     return out;
   }
-  auto bytes = http_get(base_url_ + "/cas/" + *digest, timeout_ms_, kMaxEntryBytes, too_large);
+  auto bytes = http_get(base_url_ + "/cas/" + *digest, timeout_ms_, kMaxEntryBytes, too_large, server_down);
+  if (server_down) down_->store(true);
   if (!bytes) {
     if (too_large) out.problem = fmt::format("its blob is over the limit of {} bytes", kMaxEntryBytes);
     return out;
@@ -138,11 +156,14 @@ StoredBytes HttpCache::load_bytes(const std::string& key) const {
 }
 
 bool HttpCache::store_bytes(const std::string& key, std::string_view bytes) const {
-  if (bytes.size() > kMaxEntryBytes) return false;  // no reader would take it
+  if (bytes.size() > kMaxEntryBytes || down()) return false;  // no reader would take it; no server answers
   std::string digest = sha256_hex(bytes);
   // The blob first, so that an action-cache entry never names a missing blob.
-  return http_put(base_url_ + "/cas/" + digest, bytes, timeout_ms_) &&
-         http_put(base_url_ + "/ac/" + sha256_hex(key), digest, timeout_ms_);
+  bool server_down = false;
+  bool stored = http_put(base_url_ + "/cas/" + digest, bytes, timeout_ms_, server_down) &&
+                http_put(base_url_ + "/ac/" + sha256_hex(key), digest, timeout_ms_, server_down);
+  if (server_down) down_->store(true);
+  return stored;
 }
 
 }  // namespace facet::cache

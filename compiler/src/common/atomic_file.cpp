@@ -1,11 +1,13 @@
 #include "facet/support/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <system_error>
 
@@ -39,10 +41,36 @@ Result<std::string, std::string> create_temporary(const fs::path& target) {
   return unexpected(error_text(error));
 }
 
+using Writer = std::function<Result<void, std::string>(const std::string&)>;
+
+// An existing target that is no regular file: renaming over it would put a
+// file in the place of a device node (as root, `-o /dev/null` would replace
+// the system's /dev/null) or of a FIFO. A character device and a FIFO that
+// a process reads are written in place; anything else is refused. nullopt:
+// the target is a regular file or does not exist.
+std::optional<Result<void, std::string>> write_special_target(const std::string& target, const Writer& write) {
+  struct stat st {};
+  if (::stat(target.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return std::nullopt;
+  if (S_ISDIR(st.st_mode)) return unexpected(std::string("it is a folder"));
+  if (S_ISCHR(st.st_mode)) return write(target);
+  if (!S_ISFIFO(st.st_mode)) return unexpected(std::string("it is not a regular file"));
+  // Opening a FIFO for writing waits for a reader: without one, an error
+  // instead of a hang. The probe stays open while the writer writes, so that
+  // the reader does not see the end of the stream between the two.
+  const int probe = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+  if (probe < 0) {
+    return unexpected(errno == ENXIO ? std::string("it is a FIFO that no process is reading") : error_text(errno));
+  }
+  Result<void, std::string> written = write(target);
+  ::close(probe);
+  return written;
+}
+
 }  // namespace
 
 Result<void, std::string> replace_file_atomically(
     const std::string& target, const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary) {
+  if (auto special = write_special_target(target, write_temporary)) return std::move(*special);
   Result<std::string, std::string> temporary = create_temporary(fs::path(target));
   if (!temporary) return unexpected(temporary.error());
   std::error_code ignored;

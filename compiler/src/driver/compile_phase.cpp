@@ -29,9 +29,12 @@ void add_variant_context(Diagnostics& diags, const std::string& pass, Stage stag
 
 }  // namespace
 
+// More threads than cores would not run (TBB keeps its workers to the
+// cores, and warns on stderr for an arena asked for more), and an arena of
+// billions of threads crashes inside TBB: -j is at most the core count.
 unsigned worker_count(unsigned requested) {
-  if (requested > 0) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return requested > 0 ? std::min(requested, cores) : cores;
 }
 
 CompileCounters compile_tasks(const BuildContext& ctx, Plan& plan, const std::vector<size_t>& which) {

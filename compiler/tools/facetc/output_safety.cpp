@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "facet/support/output_paths.h"
+
 namespace facet::tools {
 namespace fs = std::filesystem;
 
@@ -28,6 +30,9 @@ void add_inputs(std::vector<RunInput>& inputs, const std::vector<std::string>& p
 
 std::optional<std::string> output_input_clash(const std::vector<std::string>& outputs,
                                               const std::vector<RunInput>& inputs) {
+  if (auto twice = support::repeated_output(outputs)) {
+    return fmt::format("outputs '{}' and '{}' are the same file; nothing was written", twice->first, twice->second);
+  }
   for (const std::string& output : outputs) {
     if (output.empty() || output == "-") continue;
     if (const RunInput* input = input_at(output, inputs)) {

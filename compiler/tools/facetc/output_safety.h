@@ -21,13 +21,15 @@ struct RunInput {
 // Adds every path of `paths` as an input that is `what`.
 void add_inputs(std::vector<RunInput>& inputs, const std::vector<std::string>& paths, const std::string& what);
 
-// The error for the first output that is the same file as an input:
-// "output 'X' is also an input of this build (what); nothing was written".
+// The error for two outputs that are one file ("outputs 'X' and 'Y' are the
+// same file; nothing was written"), else for the first output that is the
+// same file as an input: "output 'X' is also an input of this build (what);
+// nothing was written".
 std::optional<std::string> output_input_clash(const std::vector<std::string>& outputs,
                                               const std::vector<RunInput>& inputs);
 
 // true when no output (standard output, "" and "-", is none) is the same
-// file as an input. Otherwise output_input_clash's error as an
+// file as an input or as another output. Otherwise output_input_clash's error as an
 // io_cannot_write diagnostic, and false: the caller writes none of its
 // outputs.
 bool outputs_spare_inputs(const std::vector<std::string>& outputs, const std::vector<RunInput>& inputs,

@@ -75,6 +75,24 @@ Result<void> check(const Options& o) {
   if (!ends_with(o.output, ".png") && !ends_with(o.output, ".svg")) {
     return failure(fmt::format("-o {}: the output must end in .png or .svg", o.output));
   }
+  // Each option is bounded alone, not their product: a furnace sphere of
+  // 4096 pixels a side integrates 48 x 48 directions a pixel (4 x 10^10
+  // evaluations, hours). The defaults ask for at most 1.5 x 10^8.
+  constexpr uint64_t kMaxEvaluations = uint64_t(1) << 28;
+  uint64_t evaluations = 0;
+  if (o.view == "lit-sphere" && o.light == "furnace") {
+    uint64_t q = o.quadrature ? o.quadrature : 48;
+    evaluations = uint64_t(o.size) * o.size * q * q;
+  } else if (o.view == "albedo") {
+    uint64_t q = o.quadrature ? o.quadrature : 128;
+    evaluations = uint64_t(o.points) * q * q;
+  }
+  if (evaluations > kMaxEvaluations) {
+    return failure(
+        fmt::format("these options ask for {} evaluations of each model, more than {}: lower --size, "
+                    "--points or --quadrature",
+                    evaluations, kMaxEvaluations));
+  }
   return {};
 }
 

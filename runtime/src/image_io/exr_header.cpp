@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <string_view>
 #include <cstdint>
 
 namespace facet::runtime {
@@ -168,6 +169,19 @@ std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLim
     return "the BMP header: " + *problem;
   }
   return *header_size == 12 ? std::nullopt : bmp_format_problem(file);
+}
+
+std::optional<std::string> gif_header_problem(std::istream& file, const ImageLimits& limits) {
+  std::array<unsigned char, 10> header{};
+  if (!file.read(reinterpret_cast<char*>(header.data()), 10)) return std::nullopt;
+  const std::string_view magic(reinterpret_cast<const char*>(header.data()), 6);
+  if (magic != "GIF87a" && magic != "GIF89a") return std::nullopt;
+  // The logical screen: giflib allocates the canvas at this size on opening.
+  const uint64_t width = header[6] | uint64_t(header[7]) << 8, height = header[8] | uint64_t(header[9]) << 8;
+  if (std::optional<std::string> problem = image_size_problem(width, height, limits)) {
+    return "the GIF header: " + *problem;
+  }
+  return std::nullopt;
 }
 
 bool is_exr(std::istream& file) {

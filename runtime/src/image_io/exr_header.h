@@ -36,4 +36,9 @@ std::optional<std::string> exr_header_problem(std::istream& file, uint64_t file_
 // must be a pairing BMP defines; nullopt for a file that is not a BMP.
 std::optional<std::string> bmp_header_problem(std::istream& file, const ImageLimits& limits);
 
+// The same for a GIF's logical screen (OpenImageIO's GIF reader allocates
+// the canvas at that size when it opens the file: an 800-byte file
+// declaring 16000 x 16000 took 1.5 GB); nullopt for a file that is not a GIF.
+std::optional<std::string> gif_header_problem(std::istream& file, const ImageLimits& limits);
+
 }  // namespace facet::runtime

@@ -24,7 +24,7 @@ Result<void, std::string> write(const std::string& path, int width, int height, 
 }
 
 // OpenEXR and libpng trust their headers' sizes, OpenImageIO decodes RLE
-// BMPs and a JPEG's IPTC block while opening them (exr_header.h,
+// BMPs and a JPEG's IPTC block and allocates a GIF's canvas while opening them (exr_header.h,
 // png_header.h, jpeg_header.h): those headers are checked first; other
 // formats go to OpenImageIO as they are.
 std::optional<std::string> header_problem(const std::string& path, const ImageLimits& limits) {
@@ -34,6 +34,9 @@ std::optional<std::string> header_problem(const std::string& path, const ImageLi
   const uintmax_t size = std::filesystem::file_size(path, error);
   if (error) return std::nullopt;
   if (std::optional<std::string> problem = bmp_header_problem(file, limits)) return problem;
+  file.clear();
+  file.seekg(0);
+  if (std::optional<std::string> problem = gif_header_problem(file, limits)) return problem;
   file.clear();
   file.seekg(0);
   if (std::optional<std::string> problem = jpeg_marker_problem(file)) return problem;

@@ -20,7 +20,9 @@ namespace facet::runtime {
 struct ObjLimits {
   uint64_t max_file_bytes = uint64_t(1) << 30;      // 1 GiB of text
   uint32_t max_face_corners = 512;                  // corners of one polygon
-  uint64_t max_triangle_corners = uint64_t(1) << 24;  // of the whole mesh after triangulation
+  // Of the whole mesh after triangulation; each may be a vertex of its own
+  // (about 400 bytes in all), so this keeps a mesh under 2 GB.
+  uint64_t max_triangle_corners = uint64_t(1) << 22;
   uint64_t max_elements = 0x7fffffff;               // v, vt or vn lines: tinyobjloader counts them in an int
 };
 

@@ -64,11 +64,23 @@ Attribute attribute_for(const StageVariable& input) {
   return {offsetof(Vertex, zero), VK_FORMAT_R32G32B32A32_SFLOAT};
 }
 
+constexpr uint32_t kMaxBinding = 1024;
+constexpr uint32_t kMaxDescriptorArray = 4096;
+
 Result<void, std::string> build_layouts(GpuProgram& p) {
   std::array<std::vector<VkDescriptorSetLayoutBinding>, kSetCount> sets;
   auto add = [&](uint32_t set, uint32_t binding, VkDescriptorType type, uint32_t count,
                  const std::string& name) -> Result<void, std::string> {
     if (set >= kSetCount) return unexpected(fmt::format("'{}' is in descriptor set {} (at most 3)", name, set));
+    // facetc numbers bindings from 0 and arrays are a shader's own; a
+    // package whose reflection says otherwise was edited, and a driver sizes
+    // its tables by them (binding 2^31 made lavapipe allocate 240 GB).
+    if (binding >= kMaxBinding || count > kMaxDescriptorArray) {
+      return unexpected(
+          fmt::format("'{}' has binding {} and {} descriptors (at most {} and {}): the package's "
+                      "reflection is not facetc's",
+                      name, binding, count, kMaxBinding - 1, kMaxDescriptorArray));
+    }
     VkDescriptorSetLayoutBinding b{};
     b.binding = binding;
     b.descriptorType = type;

@@ -50,6 +50,8 @@ constexpr std::array<Word<VkStencilOp>, 8> kStencilOps = {{{"Keep", VK_STENCIL_O
                                                             {"IncrWrap", VK_STENCIL_OP_INCREMENT_AND_WRAP},
                                                             {"DecrWrap", VK_STENCIL_OP_DECREMENT_AND_WRAP}}};
 
+constexpr float kLargestStateNumber = 1 << 24;
+
 struct Resolver {
   const Material& material;
   std::optional<std::string> error;
@@ -69,6 +71,12 @@ struct Resolver {
     std::optional<float> value = state_property(material, name_of(v));
     if (!value) {
       fail(command, fmt::format("the material has no number property '{}'", name_of(v)));
+      return std::nullopt;
+    }
+    // An enum index or a mask is a small integer; a value past int (1e30,
+    // 2^31) would wrap or convert to 0, and so pick a state nobody wrote.
+    if (!std::isfinite(*value) || std::fabs(*value) > kLargestStateNumber) {
+      fail(command, fmt::format("property '{}' = {} is out of range", name_of(v), *value));
       return std::nullopt;
     }
     return int(std::lround(*value));

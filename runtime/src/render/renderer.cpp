@@ -114,6 +114,10 @@ Result<void, Diagnostics> Renderer::draw(const Scene& scene, RenderedFrame& out,
   out.width = options.width ? options.width : scene.width;
   out.height = options.height ? options.height : scene.height;
   if (options.frames < 1) return unexpected(render_error("frames must be at least 1"));
+  if (out.width < 1 || out.height < 1 || int64_t(out.width) * out.height > kMaxFramePixels) {
+    return unexpected(render_error(fmt::format("a frame of {} x {} is outside 1 to {} pixels (4096 x 4096)", out.width,
+                                               out.height, kMaxFramePixels)));
+  }
   if (options.capture && !scene.post.empty()) {
     return unexpected(render_error(scene.path + ": a frame capture does not cover image effects"));
   }

@@ -62,6 +62,7 @@ Result<ShaderAsset*, Diagnostics> ShaderLibrary::load(const std::string& path) {
   Diagnostics diags;
   if (is_package_path(path)) {
     Result<package::Package> pkg = read_package_file(path, diags);
+    if (pkg && compiler_ && compiler_->check_package && !compiler_->check_package(*pkg, path, diags)) pkg = failure();
     if (!pkg) return unexpected(rebase_diagnostics(diags, asset->sources, report_));
     adopt_package(*asset, std::move(*pkg));
     ShaderAsset* raw = asset.get();

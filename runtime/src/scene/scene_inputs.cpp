@@ -6,6 +6,7 @@
 #include <set>
 
 #include "facet/runtime/gltf.h"
+#include "facet/support/output_paths.h"
 
 namespace facet::runtime {
 namespace {
@@ -42,11 +43,18 @@ std::vector<SceneInput> scene_inputs(const std::string& scene_path, const Scene&
   }
   for (const ScenePostEffect& p : scene.post) add_material(inputs, p.material);
   for (const SceneLight& l : scene.lights) add_texture(inputs, l.cookie);
+  if (scene.environment && !scene.environment->file.empty()) {
+    inputs.push_back({scene.environment->file, "the environment image of the scene"});
+  }
   return inputs;
 }
 
 std::optional<std::string> output_clash(const std::string& program, const std::vector<std::string>& outputs,
                                         const std::vector<SceneInput>& inputs) {
+  if (auto twice = support::repeated_output(outputs)) {
+    return fmt::format("{}: error: outputs '{}' and '{}' are the same file; nothing was written", program, twice->first,
+                       twice->second);
+  }
   for (const std::string& output : outputs) {
     std::error_code ec;
     if (output.empty() || !std::filesystem::exists(output, ec)) continue;

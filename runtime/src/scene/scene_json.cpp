@@ -334,6 +334,9 @@ struct Reader {
     if (j.contains("keywords")) {
       const json& k = member(j, "keywords");
       if (!k.is_array()) throw Bad{join(path, "keywords"), "expected a list of keyword strings"};
+      if (k.size() > kMaxMaterialKeywords) {
+        throw Bad{join(path, "keywords"), fmt::format("more than {} keywords", kMaxMaterialKeywords)};
+      }
       for (size_t i = 0; i < k.size(); ++i) m.keywords.push_back(text(k[i], index(join(path, "keywords"), i)));
     }
     if (j.contains("queue")) m.queue = integer(member(j, "queue"), join(path, "queue"), 0, 5000);
@@ -518,7 +521,7 @@ struct Reader {
       if (!(p.intensity >= 0)) throw Bad{join(path, "intensity"), "expected a number >= 0"};
     }
     if (j.contains("resolution")) {
-      p.resolution = integer(member(j, "resolution"), join(path, "resolution"), 16, 512);
+      p.resolution = integer(member(j, "resolution"), join(path, "resolution"), 16, 256);
       if ((p.resolution & (p.resolution - 1)) != 0) throw Bad{join(path, "resolution"), "expected a power of two"};
     }
     return p;
@@ -543,6 +546,11 @@ struct Reader {
     Scene s;
     if (j.contains("width")) s.width = integer(member(j, "width"), "width", 1, 16384);
     if (j.contains("height")) s.height = integer(member(j, "height"), "height", 1, 16384);
+    if (int64_t(s.width) * s.height > kMaxFramePixels) {
+      throw Bad{
+          j.contains("height") ? "height" : "width",
+          fmt::format("a frame of {} x {} is more than {} pixels (4096 x 4096)", s.width, s.height, kMaxFramePixels)};
+    }
     if (j.contains("time")) s.time = number(member(j, "time"), "time");
     if (!j.contains("camera")) throw Bad{"camera", "missing (every scene needs a camera)"};
     s.camera = camera(member(j, "camera"), "camera");
@@ -562,8 +570,16 @@ struct Reader {
       const json& probes = member(j, "reflection_probes");
       if (!probes.is_array()) throw Bad{"reflection_probes", "expected a list of reflection probes"};
       if (probes.size() > 16) throw Bad{"reflection_probes", "expected at most 16 probes (each renders the scene six times)"};
+      int64_t texels = 0;
       for (size_t i = 0; i < probes.size(); ++i) {
         s.reflection_probes.push_back(reflection_probe(probes[i], index("reflection_probes", i)));
+        texels += int64_t(6) * s.reflection_probes.back().resolution * s.reflection_probes.back().resolution;
+        if (texels > kMaxProbeTexels) {
+          throw Bad{index("reflection_probes", i),
+                    fmt::format("the probes render more than {} texels together (four probes of 256, six faces "
+                                "each): each face renders the scene",
+                                kMaxProbeTexels)};
+        }
       }
     }
     if (s.camera.clear_sky && !s.sky && !s.environment) {

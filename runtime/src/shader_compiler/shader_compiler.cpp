@@ -3,11 +3,33 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "facet/backend.h"
 #include "facet/compiler.h"
 #include "facet/runtime/shader_compiler.h"
 #include "facet/shader_search.h"
 
 namespace facet::runtime {
+namespace {
+
+// spirv-val over every module of `package`; the first invalid one is an
+// error naming the package (a compile's own modules pass: it validated
+// them, but one from a cache entry may have been edited there).
+Result<void> check_modules(const package::Package& package, const std::string& path, Diagnostics& diags) {
+  for (size_t i = 0; i < package.spirv_blobs.size(); ++i) {
+    Diagnostics found;
+    if (backend::validate(package.spirv_blobs[i], backend::TargetEnv::vulkan1_2, found)) continue;
+    std::string why = found.all().empty() ? std::string("spirv-val refused it") : found.all()[0].message;
+    diags.add(
+        DiagId::shader_unavailable, SourceSpan{},
+        fmt::format("{}: SPIR-V module {} is not valid SPIR-V, so it is not given to the driver ({})", path, i, why));
+    return failure();
+  }
+  return {};
+}
+
+}  // namespace
 
 std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerOptions& options) {
   auto compiler = std::make_shared<const Compiler>();
@@ -42,9 +64,11 @@ std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerO
     compile_options.backend.include_dirs = options.include_dirs;
     Result<CompiledShader> compiled = compiler->compile(shader, compile_options, sources, diags);
     if (!compiled) return failure();
+    if (!options.cache_dir.empty()) FACET_TRY(check_modules(compiled->package, sources.path(shader.file), diags));
     return CompiledPassVariant{std::move(compiled->package),
                                {compiled->dependencies.begin(), compiled->dependencies.end()}};
   };
+  out->check_package = check_modules;
   if (!options.shader_dirs.empty()) {
     std::vector<ShaderDir> dirs;
     for (const std::string& dir : options.shader_dirs) dirs.push_back({dir, true});

@@ -59,21 +59,12 @@ void print_stats(std::ostream& out, const runtime::RenderedFrame& f, const runti
   for (const std::string& v : f.compiled) out << "  compiled: " << v << "\n";
 }
 
-// The make rule of the image: the scene, its meshes, textures and shaders,
-// and every file the shaders included (what a build system re-renders on).
-// Refused, before anything is written, when the depfile would replace one of them.
-Result<std::string, std::string> depfile_rule(const RenderArgs& a, const runtime::Scene& scene,
-                                              const runtime::RenderedFrame& frame) {
+// The make rule of the image: the scene, its meshes, textures, environment
+// and shaders, and every file the shaders included (what a build system
+// re-renders on).
+std::string depfile_rule(const RenderArgs& a, const runtime::Scene& scene, const runtime::RenderedFrame& frame) {
   std::set<std::string> deps(frame.shader_files.begin(), frame.shader_files.end());
   for (const runtime::SceneInput& input : runtime::scene_inputs(a.scene, scene)) deps.insert(input.path);
-  std::error_code ec;
-  for (const std::string& dep : deps) {
-    if (std::filesystem::equivalent(a.depfile, dep, ec)) {
-      return unexpected(fmt::format(
-          "facet render: error: the depfile '{}' is also a file this render read ({}); nothing was written", a.depfile,
-          dep));
-    }
-  }
   return make_rule(a.png.empty() ? a.exr : a.png, {deps.begin(), deps.end()});
 }
 
@@ -140,15 +131,15 @@ int run(const RenderArgs& a, std::ostream& out, std::ostream& err) {
     return 1;
   }
   for (const std::string& miss : frame->variant_misses) err << "facet render: warning: " << miss << "\n";
-  std::string rule;
-  if (!a.depfile.empty()) {
-    auto r = depfile_rule(a, *scene, *frame);
-    if (!r) {
-      err << r.error() << "\n";
-      return 1;
-    }
-    rule = std::move(*r);
+  // The shaders' includes and the shaders a UsePass or Fallback named are
+  // known only now: no output may replace one of them either.
+  std::vector<runtime::SceneInput> read = runtime::scene_inputs(a.scene, *scene);
+  for (const std::string& file : frame->shader_files) read.push_back({file, "a file a shader of the scene read"});
+  if (auto clash = runtime::output_clash("facet render", {a.png, a.exr, a.depfile, a.variants}, read)) {
+    err << *clash << "\n";
+    return 1;
   }
+  std::string rule = a.depfile.empty() ? std::string() : depfile_rule(a, *scene, *frame);
   if (a.explain) out << runtime::explain_text(*frame);
   if (a.stats) print_stats(out, *frame, **context);
   if (!a.png.empty()) {

@@ -78,6 +78,18 @@ TEST_F(BackendDiagnosticsTest, MissingIncludeIsLocatedAtTheDirective) {
   EXPECT_NE(d.notes[0].message.find("stdlib"), std::string::npos) << d.notes[0].message;
 }
 
+// After `#line 5 "other.cginc"` glslang names a file the SourceMap does not
+// have: the error was printed with no place at all.
+TEST_F(BackendDiagnosticsTest, MissingIncludeAfterALineDirectiveIsLocatedAtTheDirective) {
+  TestShader t = load_shader("missing_include_after_line.shader");
+  std::string text = fail(t);
+  const Diagnostic& d = first_error();
+  EXPECT_EQ(d.id, DiagId::backend_include_not_found);
+  ASSERT_TRUE(d.span.has_location()) << text;
+  std::string where = position_of(t.sources, t.shader.file, "\"DoesNotExist.cginc\"");
+  EXPECT_NE(text.find(where + ": error: include file 'DoesNotExist.cginc' not found"), std::string::npos) << text;
+}
+
 TEST_F(BackendDiagnosticsTest, ErrorInIncludedFileHasIncludeStack) {
   TestShader t = load_shader("include_error.shader");
   std::string text = fail(t);

@@ -59,6 +59,13 @@ TEST(BrdfCommand, BadOptionsAreRefusedWithTheReason) {
       {"incidence.svg", {{"ggx", "--view", "polar", "--incidence", "95", "-o", "OUT"}, "--incidence"}},
       {"light.png", {{"ggx", "--view", "lit-sphere", "--light", "sun", "-o", "OUT"}, "--light"}},
       {"unknown.svg", {{"ggx", "--view", "polar", "--frobnicate", "-o", "OUT"}, "frobnicate"}},
+      // Each within its range, together hours of work.
+      {"furnace.png",
+       {{"ggx", "--view", "lit-sphere", "--light", "furnace", "--size", "4096", "-o", "OUT"},
+        "these options ask for 38654705664 evaluations of each model, more than 268435456"}},
+      {"albedo.svg",
+       {{"ggx", "--view", "albedo", "--quadrature", "2048", "--points", "1000", "-o", "OUT"},
+        "these options ask for 4194304000 evaluations of each model, more than 268435456"}},
   };
   for (const auto& [name, c] : cases) expect_refused(c, name);
 }

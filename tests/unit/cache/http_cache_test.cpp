@@ -1,5 +1,9 @@
 // The bazel-remote HTTP backend against a local server started by the test.
+#include <arpa/inet.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -53,6 +57,36 @@ TEST(CacheHttpTest, ServerDownIsAMissNotAFailure) {
   HttpCache remote(url, 2000);
   EXPECT_FALSE(remote.load_bytes("0123456789abcdef0123456789abcdef").bytes);
   EXPECT_FALSE(remote.store_bytes("0123456789abcdef0123456789abcdef", "x"));
+}
+
+// A server that accepts connections and never answers: each request would
+// wait out the timeout, one a program, and a build of many programs took
+// minutes. After the first timeout the server is not asked again.
+TEST(CacheHttpTest, AServerThatNeverAnswersCostsOneTimeoutNotOneARequest) {
+  int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(listener, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  ASSERT_EQ(::listen(listener, 64), 0);  // connections complete in the backlog, unanswered
+  socklen_t length = sizeof address;
+  ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
+  HttpCache remote("http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)), 500);
+  EXPECT_FALSE(remote.down());
+  EXPECT_FALSE(remote.load_bytes("0123456789abcdef0123456789abcdef").bytes);
+  EXPECT_TRUE(remote.down());
+  HttpCache copy = remote;  // the build's stores share what was learnt
+  for (int i = 0; i < 20; ++i) {
+    EXPECT_FALSE(copy.load_bytes("0123456789abcdef0123456789abcdef").bytes);
+    EXPECT_FALSE(copy.store_bytes("0123456789abcdef0123456789abcdef", "x"));
+  }
+  // Every request would have left a connection in the backlog: one did.
+  ASSERT_EQ(::fcntl(listener, F_SETFL, O_NONBLOCK), 0);
+  int connections = 0;
+  for (int c; (c = ::accept(listener, nullptr, nullptr)) >= 0; ++connections) ::close(c);
+  EXPECT_EQ(connections, 1);
+  ::close(listener);
 }
 
 // The server's /ac/ entry of one key names the blob of another: the entry

@@ -3,8 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -82,6 +84,49 @@ TEST_F(AtomicFileTest, AFolderInTheTargetsPlaceIsAnErrorAndStaysAsItWas) {
   EXPECT_FALSE(written.error().empty());
   EXPECT_TRUE(fs::is_directory(dir_ / "taken" / "inside"));
   EXPECT_THAT(files(), ::testing::ElementsAre("taken"));
+}
+
+// Renaming over a device node would replace it with a file: as root,
+// `facetc X.shader -o /dev/null` replaced the system's /dev/null.
+TEST_F(AtomicFileTest, ACharacterDeviceIsWrittenInPlaceAndStaysADevice) {
+  std::string device = (dir_ / "null").string();
+  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0) GTEST_SKIP() << "mknod needs root";
+  ASSERT_TRUE(write_file_atomically(device, "a package"));
+  struct stat st {};
+  ASSERT_EQ(::stat(device.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  EXPECT_THAT(files(), ::testing::ElementsAre("null"));
+}
+
+TEST_F(AtomicFileTest, AFifoThatAProcessReadsReceivesTheBytes) {
+  std::string fifo = (dir_ / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0);
+  std::string received;
+  std::thread reader([&] { received = read(fifo); });
+  // Written once the reader has the FIFO open (until then it is refused as unread).
+  Result<void, std::string> written = unexpected(std::string("not tried"));
+  for (int i = 0; i < 2000 && !written; ++i) {
+    written = write_file_atomically(fifo, "streamed bytes");
+    if (!written) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  reader.join();
+  ASSERT_TRUE(written) << written.error();
+  EXPECT_EQ(received, "streamed bytes");
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+}
+
+TEST_F(AtomicFileTest, AFifoNobodyReadsIsAnErrorNotAHang) {
+  std::string fifo = (dir_ / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0);
+  Result<void, std::string> written = write_file_atomically(fifo, "bytes");
+  ASSERT_FALSE(written);
+  EXPECT_THAT(written.error(), ::testing::HasSubstr("FIFO that no process is reading"));
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_THAT(files(), ::testing::ElementsAre("pipe"));
 }
 
 TEST_F(AtomicFileTest, AMissingFolderIsAnErrorNamingWhy) {

@@ -440,6 +440,28 @@ TEST(HostileGltfControl, TheUnbrokenSampleRenders) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
+// Nodes that reuse one mesh multiply its vertices: 600 nodes of a mesh of
+// 1000 primitives of one quad (a 100 KB file) asked for 2.4 million
+// vertices. The model's vertices are counted after instancing and refused
+// past 2^21 (at about 400 bytes a vertex in all, under 2 GB).
+TEST(HostileGltfControl, NodesReusingAMeshAreCountedAgainstTheVertexLimit) {
+  GltfSampleOptions amplified = edit([](json& g, std::string&) {
+    json quad = primitive(g);
+    g["meshes"][0]["primitives"] = json::array();
+    for (int i = 0; i < 1000; ++i) g["meshes"][0]["primitives"].push_back(quad);
+    for (int i = 0; i < 600; ++i) {
+      g["scenes"][0]["nodes"].push_back(g["nodes"].size());
+      g["nodes"].push_back({{"mesh", 0}});
+    }
+  });
+  std::string mesh = write_gltf_sample(test_dir(), "amplified", amplified);
+  Outcome r = render_expecting_failure(
+      "amplified", write_scene("amplified", small_scene(gltf_object(mesh, unlit_texture_shader()))));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("the model has more than 2097152 vertices (the limit of one glTF mesh)"), std::string::npos)
+      << r.err.substr(0, 2000);
+}
+
 // A glTF mesh's .bin file is an input of the render: listed in the depfile
 // (with the textures its material names), and never overwritten by an output.
 TEST(GltfInputs, TheBinFileIsInTheDepfileAndAnOutputOverItIsRefused) {

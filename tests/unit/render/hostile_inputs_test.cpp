@@ -172,14 +172,44 @@ std::string long_name_mesh() {
                      R"("}}])");
 }
 
+// A scene of the given size (the first members of the scene).
+std::string sized_scene(const std::string& size) {
+  return "{" + size + R"(, "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0]}, "objects": )" + unlit_objects() +
+         "}";
+}
+
+std::string probes(int count, int resolution) {
+  std::string list;
+  for (int i = 0; i < count; ++i) {
+    list +=
+        (i ? ", " : "") + std::string(R"({"position": [0, 0, 0], "resolution": )") + std::to_string(resolution) + "}";
+  }
+  return scene_with(R"("reflection_probes": [)" + list + "], ");
+}
+
+std::string many_keywords(size_t count) {
+  std::string list;
+  for (size_t i = 0; i < count; ++i) list += (i ? ", \"K" : "\"K") + std::to_string(i) + "\"";
+  return small_scene(R"([{"mesh": "sphere", "material": {"shader": ")" + example_shader("Unlit.shader") +
+                     R"(", "keywords": [)" + list + "]}}]");
+}
+
 const JsonCase kJsonCases[] = {
+    // The documented largest side took 12 GB; 8192 x 8192 3.4 GB.
+    {"frame_of_16384_squared", sized_scene(R"("width": 16384, "height": 16384)"),
+     "height: a frame of 16384 x 16384 is more than 16777216 pixels (4096 x 4096)"},
+    {"frame_wide_and_tall", sized_scene(R"("width": 16384, "height": 1025)"),
+     "height: a frame of 16384 x 1025 is more than 16777216 pixels (4096 x 4096)"},
+    {"probe_of_512", probes(1, 512), "reflection_probes[0].resolution: expected an integer from 16 to 256"},
+    {"probes_past_their_texels", probes(5, 256),
+     "reflection_probes[4]: the probes render more than 1572864 texels together"},
+    {"material_of_2000_keywords", many_keywords(2000), "objects[0].material.keywords: more than 1024 keywords"},
     {"number_past_double", "{\n  \"time\": 1e400,\n  \"camera\": {}, \"objects\": []}",
      "invalid JSON: number overflow parsing '1e400'", "2:11"},
     {"negative_number_past_double", R"({"camera": {"fov": -1e400}, "objects": []})",
      "invalid JSON: number overflow parsing '-1e400'", "1:20"},
     {"number_past_float", scene_with(R"("time": 1e39, )"), "time: the number 1e+39 is out of range"},
-    {"colour_past_float", scene_with(R"("ambient": [1, 1e300, 0], )"),
-     "ambient[1]: the number 1e+300 is out of range"},
+    {"colour_past_float", scene_with(R"("ambient": [1, 1e300, 0], )"), "ambient[1]: the number 1e+300 is out of range"},
     {"nesting_a_million_deep", deeply_nested_post(1000000), "invalid JSON: nested deeper than 64 levels"},
     {"mesh_name_too_long_for_the_file_system", long_name_mesh(), "objects[0].mesh: not a built-in mesh"},
 };
@@ -444,6 +474,10 @@ INSTANTIATE_TEST_SUITE_P(
     Inputs, FuzzFoundImages,
     ::testing::Values(FuzzFoundImage{"bmp-rle-738197508-rows.bmp", "the BMP header: the image is 4x738197508 pixels"},
                       FuzzFoundImage{"bmp-rle-tall-2.bmp", "the BMP header: "},
+                      // An 800-byte GIF whose logical screen OpenImageIO allocated (1.5 GB) before failing.
+                      FuzzFoundImage{"gif-screen-16000-squared.gif",
+                                     "the GIF header: the image is 16000x16000 pixels (256000000 in all); at most "
+                                     "67108864 are decoded (facet's pixel budget)"},
                       FuzzFoundImage{"bmp-rle8-at-24-bits.bmp",
                                      "the BMP header declares 24 bits a pixel with compression 1, a pairing BMP does "
                                      "not define"},

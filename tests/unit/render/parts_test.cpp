@@ -1,6 +1,7 @@
 // The renderer's pure parts: uniform blocks laid out from reflection, render
 // state resolved against materials, built-in meshes.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cstring>
 #include <glm/glm.hpp>
@@ -115,6 +116,30 @@ TEST(RenderState, MissingPropertyIsAnErrorNamingIt) {
   ASSERT_EQ(diags.size(), 1u);
   EXPECT_EQ(diags.all()[0].id, DiagId::render_state_property);
   EXPECT_EQ(diags.all()[0].message, "ZTest: the material has no number property '_ZTest'");
+}
+
+// 2^31 wrapped to INT_MIN (then overflowed subtracting the first index),
+// and 1e30 converted to 0, i.e. ZTest Disabled, without a word.
+TEST(RenderState, ANumberPastIntIsOutOfRangeNotWrapped) {
+  for (float value : {2147483648.0f, -2147483649.0f, 1e30f, -1e30f, 3.4e38f}) {
+    for (bool ztest : {true, false}) {
+      ir::RenderState state;
+      if (ztest) {
+        state.ztest = property("_Value");
+      } else {
+        state.cull = property("_Value");
+      }
+      Material m;
+      m.numbers["_Value"] = {value, 0, 0, 0};
+      Diagnostics diags;
+      auto s = resolve_state(state, m, diags);
+      ASSERT_FALSE(s) << value;
+      ASSERT_EQ(diags.size(), 1u);
+      EXPECT_EQ(diags.all()[0].id, DiagId::render_state_property);
+      EXPECT_EQ(diags.all()[0].message,
+                fmt::format("{}: property '_Value' = {} is out of range", ztest ? "ZTest" : "Cull", value));
+    }
+  }
 }
 
 TEST(Meshes, BuiltinsFaceOutwardWithUnitNormalsAndOrthogonalTangents) {

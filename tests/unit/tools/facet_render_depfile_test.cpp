@@ -82,10 +82,34 @@ TEST_F(FacetRenderDepfileTest, ADepfileNamingAFileTheRenderReadIsRefusedAndNothi
   std::string include = read_all(dir_ / "lib" / "Tint.cginc");
   run = render({"scene.json", "-o", "out.png", "-I", "lib", "--depfile", "lib/Tint.cginc"});
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_THAT(run.err, HasSubstr("the depfile 'lib/Tint.cginc' is also a file this render read"));
+  EXPECT_THAT(run.err, HasSubstr("output 'lib/Tint.cginc' is also an input of this render (a file a shader of the "
+                                 "scene read); nothing was written"));
   EXPECT_EQ(read_all(dir_ / "lib" / "Tint.cginc"), include);
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
   EXPECT_THAT(run.err, Not(HasSubstr("cannot write")));
+}
+
+// The image too: an include is an input of the render, whichever output names it.
+TEST_F(FacetRenderDepfileTest, AnImageNamingAnIncludeOfTheShadersIsRefusedAndNothingIsWritten) {
+  std::string include = read_all(dir_ / "lib" / "Tint.cginc");
+  FacetcRun run = render({"scene.json", "-o", "lib/Tint.cginc", "-I", "lib"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("output 'lib/Tint.cginc' is also an input of this render (a file a shader of the "
+                                 "scene read)"));
+  EXPECT_EQ(read_all(dir_ / "lib" / "Tint.cginc"), include);
+}
+
+TEST_F(FacetRenderDepfileTest, TwoOutputsNamingOneFileAreRefusedBeforeRendering) {
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"scene.json", "-o", "z.png", "-I", "lib", "--depfile", "z.png"},
+           {"scene.json", "-o", "y.png", "-I", "lib", "--exr", "./y.png"},
+           {"scene.json", "-o", "w.png", "-I", "lib", "--depfile", "d.txt", "--emit-variants", "d.txt"}}) {
+    FacetcRun run = render(args);
+    EXPECT_EQ(run.exit_code, 1) << args[2];
+    EXPECT_THAT(run.err, HasSubstr("are the same file; nothing was written")) << args[2];
+    EXPECT_FALSE(fs::exists(dir_ / args[2])) << args[2];
+    EXPECT_FALSE(fs::exists(dir_ / "d.txt"));
+  }
 }
 
 }  // namespace

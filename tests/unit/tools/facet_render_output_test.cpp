@@ -63,5 +63,18 @@ TEST_F(FacetRenderOutputTest, OutputsNamingAMeshOrAShaderAreRefused) {
   expect_refused({"scene.json", "--exr", "link.exr"}, "link.exr", "a shader of the scene", "Diffuse.shader");
 }
 
+TEST_F(FacetRenderOutputTest, OutputsNamingTheEnvironmentImageAreRefused) {
+  fs::copy_file(fs::path(FACET_SOURCE_DIR) / "examples" / "textures" / "studio.exr", dir_ / "studio.exr");
+  std::string scene = kScene;
+  scene.insert(scene.rfind('}'), R"(, "environment": { "file": "studio.exr" })");
+  write_all(dir_ / "lit.json", scene);
+  const std::string what = "the environment image of the scene";
+  expect_refused({"lit.json", "-o", "studio.exr"}, "studio.exr", what, "studio.exr");
+  expect_refused({"lit.json", "-o", "x.png", "--exr", "studio.exr"}, "studio.exr", what, "studio.exr");
+  expect_refused({"lit.json", "-o", "x.png", "--depfile", "studio.exr"}, "studio.exr", what, "studio.exr");
+  expect_refused({"lit.json", "-o", "x.png", "--emit-variants", "studio.exr"}, "studio.exr", what, "studio.exr");
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
 }  // namespace
 }  // namespace facet::tools::testing

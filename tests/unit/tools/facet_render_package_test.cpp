@@ -6,9 +6,13 @@
 // same holds for facet-play, the runtime without the compiler.
 #include <nlohmann/json.hpp>
 
+#include <span>
+
+#include <functional>
 #include <set>
 #include <tuple>
 
+#include "facet/package.h"
 #include "facetc_test_util.h"
 
 namespace facet::tools::testing {
@@ -35,6 +39,24 @@ class FacetRenderPackageTest : public FacetcTest {
     args.insert(args.end(), extra.begin(), extra.end());
     FacetcRun run = facetc(args);
     ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+
+  // Renders the lights scene with PhongMultiLight's package changed by
+  // `edit` and written back with its checksum recomputed, as anyone can.
+  FacetcRun render_edited(const std::function<void(package::Package&)>& edit) const {
+    build_package("Diffuse.shader", "Diffuse.facetpkg");
+    build_package("PhongMultiLight.shader", "Good.facetpkg");
+    std::string bytes = read_all(dir_ / "Good.facetpkg");
+    Diagnostics diags;
+    auto package =
+        package::read_package(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()), diags);
+    EXPECT_TRUE(package);
+    if (!package) return {};
+    edit(*package);
+    std::vector<uint8_t> edited = package::write_package(*package);
+    write_all(dir_ / "Phong.facetpkg", std::string(edited.begin(), edited.end()));
+    write_scene("packages.json", "Diffuse.facetpkg", "Phong.facetpkg");
+    return facet_render({"packages.json", "-o", "out.png"});
   }
 };
 
@@ -174,6 +196,42 @@ TEST_F(FacetRenderPackageTest, ACorruptPackageIsAnErrorNamingTheFile) {
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+// The checksum's seed is public: a package edited and re-checksummed reads
+// well. Its reflection's bindings size the driver's tables (binding 2^31
+// made lavapipe allocate 240 GB and abort): one past what facetc numbers is
+// a clear error.
+TEST_F(FacetRenderPackageTest, AnEditedPackageWithAnAbsurdBindingIsAnErrorNotAnAbort) {
+  FacetcRun run = render_edited([](package::Package& package) {
+    for (package::PackagePass& pass : package.passes) {
+      for (package::PackageVariant& variant : pass.variants) {
+        for (package::PackageStage& stage : variant.stages) {
+          for (UniformBlock& block : stage.reflection.uniform_blocks) block.binding = 2147483648u;
+        }
+      }
+    }
+  });
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("has binding 2147483648 and 1 descriptors (at most 1023 and 4096): the package's "
+                                 "reflection is not facetc's"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+// Two bytes of an edited module crashed lavapipe inside vkCreateGraphicsPipelines:
+// `facet render` (which has the compiler) runs spirv-val over a package's
+// modules before the driver sees them.
+TEST_F(FacetRenderPackageTest, AnEditedPackageWithInvalidSpirvIsAnErrorNotACrash) {
+  FacetcRun run = render_edited([](package::Package& package) {
+    ASSERT_FALSE(package.spirv_blobs.empty());
+    for (std::vector<uint32_t>& module : package.spirv_blobs) {
+      ASSERT_GT(module.size(), 6u);
+      module[5] = 0xffffffffu;  // the first instruction: no opcode, a word count past the module's end
+    }
+  });
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("Phong.facetpkg: SPIR-V module 0 is not valid SPIR-V, so it is not given to the "
+                                 "driver"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
 
 // The (pass name, sorted keywords) pairs a dumped package holds, or a
 // collection lists for one shader.

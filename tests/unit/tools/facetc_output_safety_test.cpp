@@ -140,6 +140,38 @@ TEST_F(FacetcOutputSafetyTest, CheckReportNamingAShaderIsRefusedBeforeCompiling)
   EXPECT_EQ(read_all(dir_ / "src" / "Included.shader"), kShader);
 }
 
+// The includes and the shaders a Fallback names are known only after the
+// checks: a report naming one is refused then, before it is written.
+TEST_F(FacetcOutputSafetyTest, CheckReportNamingAnIncludeOrAFallbackShaderIsRefused) {
+  fs::create_directories(dir_ / "lint");
+  write_all(dir_ / "lint" / "Falls.shader", R"(Shader "Tests/Falls" {
+    SubShader { Pass { } }
+    Fallback "Tests/Included"
+}
+)");
+  fs::copy_file(dir_ / "src" / "Included.shader", dir_ / "lint" / "Included.shader");
+  fs::copy_file(dir_ / "src" / "Local.cginc", dir_ / "lint" / "Local.cginc");
+  for (const char* report : {"--junit", "--sarif"}) {
+    FacetcRun run = facetc({"--check", "lint/Falls.shader", report, "lint/Included.shader"});
+    EXPECT_EQ(run.exit_code, 1) << report << run.err;
+    EXPECT_THAT(run.err, HasSubstr("output 'lint/Included.shader' is also an input of this build (a file a checked "
+                                   "shader read); nothing was written"));
+    EXPECT_EQ(read_all(dir_ / "lint" / "Included.shader"), kShader);
+  }
+  FacetcRun run = facetc({"--check", "src/Included.shader", "--junit", "src/Local.cginc"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("output 'src/Local.cginc' is also an input of this build"));
+  EXPECT_EQ(read_all(dir_ / "src" / "Local.cginc"), kInclude);
+}
+
+TEST_F(FacetcOutputSafetyTest, ThePackageAndTheDepfileNamingOneFileAreRefused) {
+  FacetcRun run = facetc({"src/Included.shader", "-MD", "-MF", "o.facetpkg", "-o", "o.facetpkg"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_THAT(run.err,
+              HasSubstr("error: outputs 'o.facetpkg' and 'o.facetpkg' are the same file; nothing was written"));
+  EXPECT_FALSE(fs::exists(dir_ / "o.facetpkg"));
+}
+
 TEST_F(FacetcOutputSafetyTest, AnOutputThatIsNoInputIsWritten) {
   FacetcRun run = facetc({"src/Included.shader", "-MD", "-o", "src/Included.facetpkg"});
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -19,6 +19,10 @@ namespace facet::support {
 // target never share a temporary.
 // On any failure the temporary is removed and the error is a reason without
 // the target's name, for the caller to place.
+// A target that exists and is no regular file is never replaced: a
+// character device (`-o /dev/null`) or a FIFO that a process reads is given
+// to `write_temporary` itself, and is written in place; a FIFO nobody reads,
+// a folder, a socket or a block device is an error.
 Result<void, std::string> replace_file_atomically(
     const std::string& target, const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary);
 

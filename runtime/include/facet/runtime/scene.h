@@ -10,6 +10,8 @@
 //   if (!scene) { fputs(render_text(diags, sources).c_str(), stderr); return 1; }
 #pragma once
 
+#include <cstdint>
+
 #include <array>
 #include <map>
 #include <memory>
@@ -215,6 +217,15 @@ struct ScenePostEffect {
   int pass = 0;                     // into the passes of the shader's SubShader
   bool operator==(const ScenePostEffect&) const = default;
 };
+
+// A frame of at most this many pixels (4096 x 4096; each side at most
+// 16384): its images, on the CPU and in a CPU driver's memory, stay under
+// 2 GB. Reflection probes render at most kMaxProbeTexels texels together
+// (six faces each), at most 256 a side.
+inline constexpr int64_t kMaxFramePixels = int64_t(4096) * 4096;
+inline constexpr int64_t kMaxProbeTexels = int64_t(4) * 6 * 256 * 256;
+// Keywords one material may enable (Unity allows 64 local and 256 global).
+inline constexpr size_t kMaxMaterialKeywords = 1024;
 
 struct Scene {
   std::string path;                 // as given, for messages

@@ -16,14 +16,15 @@ struct SceneInput {
   std::string what;  // "a texture of the scene"
 };
 
-// The scene file, and every mesh (with a glTF mesh's buffers), shader and
-// texture file it names.
+// The scene file, and every mesh (with a glTF mesh's buffers), shader,
+// texture and environment image it names.
 std::vector<SceneInput> scene_inputs(const std::string& scene_path, const Scene& scene);
 
-// The error for an output that is the same file as an input (compared by
+// The error for two outputs that are one file (one would replace the
+// other), else for an output that is the same file as an input (compared by
 // device and inode, so another spelling or a hard link counts): writing the
-// image would destroy the input. An output that does not exist yet is none.
-// `program` begins the message ("facet render").
+// image would destroy the input. An output that does not exist yet is no
+// input. `program` begins the message ("facet render").
 std::optional<std::string> output_clash(const std::string& program, const std::vector<std::string>& outputs,
                                         const std::vector<SceneInput>& inputs);
 
