@@ -92,32 +92,16 @@ std::optional<MacroExcess> MacroBudget::add_lines(const TokenLines& lines) {
   std::span<const Token> all(lines.tokens);
   // The code since the last directive: a call's arguments do not span one.
   size_t code_begin = 0;
-  // Conditional nesting within this text: an #undef outside every #if of
-  // the text runs whenever the text is read, so the name's definitions go
-  // (`#define M i` / `#undef M` repeated 40,000 times kept 40,000 of them,
-  // each new one compared with all: minutes).
-  int depth = 0;
   for (size_t k = 0; k + 1 < lines.starts.size(); ++k) {
     size_t begin = lines.starts[k], end = lines.starts[k + 1];
     if (begin == end || all[begin].text != "#") continue;
     if (auto excess = add_code(all.subspan(code_begin, begin - code_begin))) return excess;
     code_begin = end;
-    std::string_view directive = end - begin >= 2 ? all[begin + 1].text : std::string_view();
-    if (directive == "if" || directive == "ifdef" || directive == "ifndef") ++depth;
-    if (directive == "endif" && depth > 0) --depth;
-    if (directive == "undef" && depth == 0 && end - begin >= 3) undefine(all[begin + 2].text);
-    if (end - begin >= 3 && directive == "define") {
+    if (end - begin >= 3 && all[begin + 1].text == "define") {
       if (auto excess = define(all.subspan(begin, end - begin))) return excess;
     }
   }
   return add_code(all.subspan(code_begin));
-}
-
-void MacroBudget::undefine(std::string_view name) {
-  auto slot = macros_.find(name);
-  if (slot == macros_.end()) return;
-  macros_.erase(slot);
-  if (referenced_.count(name)) ++generation_;  // memos that expanded it
 }
 
 std::optional<MacroExcess> MacroBudget::define(std::span<const Token> line) {
@@ -140,14 +124,24 @@ std::optional<MacroExcess> MacroBudget::define(std::span<const Token> line) {
   // Memos that may count this name as a plain token go stale.
   if (referenced_.count(name.text)) ++generation_;
   auto slot = macros_.find(name.text);
-  if (slot == macros_.end()) slot = macros_.emplace(std::string(name.text), std::vector<Definition>{}).first;
-  std::vector<Definition>& defs = slot->second;
-  for (const Definition& old : defs) {
-    if (old.function_like == d.function_like && old.params == d.params && old.body == d.body) return std::nullopt;
+  if (slot == macros_.end()) slot = macros_.emplace(std::string(name.text), Definitions{}).first;
+  Definitions& defs = slot->second;
+  // Known by a hash: `#define M i` / `#undef M` 40,000 times compared each
+  // new definition with all the others (minutes).
+  std::string signature = d.function_like ? "(" : "";
+  for (const std::string& p : d.params) signature += p + ",";
+  signature += ")" + d.body;
+  if (!defs.signatures.insert(std::move(signature)).second) return std::nullopt;
+  // Every use weighs every definition: their number is bounded.
+  if (defs.all.size() >= kMaxDefinitions) {
+    return MacroExcess{name.offset, fmt::format("macro '{}' has more than {} different definitions in one program "
+                                                "(every one is weighed at each use, as an #if may pick any)",
+                                                name.text, kMaxDefinitions)};
   }
-  defs.push_back(std::move(d));
+  defs.all.push_back(std::move(d));
+  std::vector<Definition>& all = defs.all;
   int depth = 0;
-  Size size = measure(defs.back(), depth);
+  Size size = measure(all.back(), depth);
   if (max_bytes_ != 0 && add(size.a, size.b) > max_bytes_) {
     return MacroExcess{name.offset, too_big(fmt::format("macro '{}'", name.text), add(size.a, size.b))};
   }
@@ -241,7 +235,7 @@ size_t MacroBudget::measure_one(const std::vector<std::string_view>& tokens, siz
   Size best = size;
   int best_depth = 0;
   bool used_call = false;
-  for (Definition& d : found->second) {
+  for (Definition& d : found->second.all) {
     if (d.in_progress || d.function_like != call) continue;
     int inner = 0;
     Size s = measure(d, inner);

@@ -14,8 +14,8 @@
 //
 // The estimate is an upper bound of the real expansion for the macros it
 // knows (each definition counts at its largest, whether or not an #if
-// skips it, until an #undef outside every #if of its text; a macro that
-// names itself is not expanded again, as in the preprocessor). It knows the macros of the texts read so far: the
+// skips it; a macro that names itself is not expanded again, as in the
+// preprocessor). It knows the macros of the texts read so far: the
 // program's own chunks are read before glslang starts, so a use in them of
 // a macro that only an included file defines is counted as one token; the
 // per-program time limit (worker.h) is the backstop for that case.
@@ -35,6 +35,10 @@ namespace facet::backend {
 // The longest chain of macros naming macros (glslang re-expands each level
 // on its own recursion).
 inline constexpr int kMaxMacroDepth = 256;
+// Different definitions of one name in one program (an #undef does not
+// drop one: the budget reads a text before the files it includes, so it
+// cannot tell which definition an include sees).
+inline constexpr size_t kMaxDefinitions = 1024;
 
 struct MacroExcess {
   size_t offset = 0;  // in the text given to add_text
@@ -84,7 +88,6 @@ class MacroBudget {
 
  private:
   std::optional<MacroExcess> define(std::span<const Token> line);
-  void undefine(std::string_view name);
   std::optional<MacroExcess> add_code(std::span<const Token> code);
   Size measure(Definition& d, int& depth);
   size_t measure_one(const std::vector<std::string_view>& tokens, size_t i, size_t end, const Definition* owner,
@@ -100,7 +103,11 @@ class MacroBudget {
     using is_transparent = void;
     size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
   };
-  std::unordered_map<std::string, std::vector<Definition>, NameHash, std::equal_to<>> macros_;
+  struct Definitions {
+    std::vector<Definition> all;
+    std::unordered_set<std::string> signatures;  // params and body of each, to drop repeats
+  };
+  std::unordered_map<std::string, Definitions, NameHash, std::equal_to<>> macros_;
   // Names some macro body named: defining one of them makes memos stale.
   std::unordered_set<std::string, NameHash, std::equal_to<>> referenced_;
   int recursion_ = 0;
