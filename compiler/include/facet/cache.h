@@ -21,7 +21,9 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -131,18 +133,33 @@ class LocalCache {
 // cache never fails a build.
 //
 //   cache::HttpCache remote("http://cache.example:8080");
+// What a Compiler has learnt of cache servers, shared by all its builds
+// (facetc's many shaders, a renderer's compiles): a server found not
+// answering is asked nothing more. Thread-safe.
+class RemoteServers {
+ public:
+  // The flag of `url`, the same object for every call with that URL.
+  std::shared_ptr<std::atomic<bool>> down_flag(const std::string& url);
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<std::atomic<bool>>> down_;
+};
+
 class HttpCache {
  public:
-  explicit HttpCache(std::string base_url, long timeout_ms = 10000);
+  // `down`: a flag shared with other HttpCaches of the same server
+  // (RemoteServers::down_flag); null: one of its own.
+  explicit HttpCache(std::string base_url, long timeout_ms = 10000, std::shared_ptr<std::atomic<bool>> down = nullptr);
   const std::string& url() const { return base_url_; }
 
   StoredBytes load_bytes(const std::string& key) const;
   bool store_bytes(const std::string& key, std::string_view bytes) const;
   // Whether a request found the server not answering (no connection, or no
-  // answer within the timeout): from then on, for this object and its
-  // copies, every load is a miss and every store is skipped at once, so a
-  // server that accepts connections and never answers costs one timeout,
-  // not one a program.
+  // answer within the timeout): from then on, for this object, its copies
+  // and every HttpCache sharing its flag, every load is a miss and every
+  // store is skipped at once, so a server that accepts connections and
+  // never answers costs one timeout, not one a program.
   bool down() const;
 
  private:

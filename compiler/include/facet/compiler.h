@@ -13,11 +13,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/backend.h"
+#include "facet/cache.h"
 #include "facet/diagnostics.h"
 #include "facet/ir.h"
 #include "facet/package.h"
@@ -230,6 +232,7 @@ class Compiler {
  private:
   friend struct CompilerInternals;  // the build-farm calls of facet/build_farm.h
   backend::Backend backend_;
+  std::shared_ptr<cache::RemoteServers> remote_servers_ = std::make_shared<cache::RemoteServers>();
 };
 
 // The input size limit of a .shader and of each file it includes (a

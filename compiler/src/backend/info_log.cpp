@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
+#include <string_view>
 
 #include "names_in_scope.h"
 #include "facet/support/text.h"
@@ -248,16 +250,34 @@ class LogMapper {
     chunks.push_back(&ctx_.program.body);
     for (const ir::SourceChunk* chunk : chunks) {
       if (!chunk->span.has_location()) continue;
-      const std::string& text = chunk->text;
-      for (size_t at = text.find("#include"); at != std::string::npos; at = text.find("#include", at + 1)) {
-        size_t eol = std::min(text.find('\n', at), text.size());
-        size_t name = text.find(header, at);
-        if (name == std::string::npos || name >= eol) continue;
-        uint32_t begin = chunk->span.begin + uint32_t(name);
-        return {chunk->span.file, begin, begin + uint32_t(header.size())};
+      std::string_view text = chunk->text;
+      for (size_t line = 0; line < text.size();) {
+        size_t eol = std::min(text.find('\n', line), text.size());
+        if (auto name = included_name_at(text.substr(line, eol - line), header)) {
+          uint32_t begin = chunk->span.begin + uint32_t(line + *name);
+          return {chunk->span.file, begin, begin + uint32_t(header.size())};
+        }
+        line = eol + 1;
       }
     }
     return {};
+  }
+
+  // Where `header` begins on `line` when the line is `#include "header"` or
+  // `#include <header>` (spaces allowed around '#').
+  static std::optional<size_t> included_name_at(std::string_view line, const std::string& header) {
+    size_t at = line.find_first_not_of(" \t");
+    if (at == std::string_view::npos || line[at] != '#') return std::nullopt;
+    at = line.find_first_not_of(" \t", at + 1);
+    if (at == std::string_view::npos || line.substr(at, 7) != "include") return std::nullopt;
+    at = line.find_first_not_of(" \t", at + 7);
+    if (at == std::string_view::npos || (line[at] != '"' && line[at] != '<')) return std::nullopt;
+    const char close = line[at] == '"' ? '"' : '>';
+    if (line.substr(at + 1, header.size()) != header ||
+        line.substr(at + 1 + header.size(), 1) != std::string(1, close)) {
+      return std::nullopt;
+    }
+    return at + 1;
   }
 
   void report_missing_include(const LogMessage& m, SourceSpan span, FileId file) {

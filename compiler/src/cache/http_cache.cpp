@@ -50,10 +50,11 @@ size_t read_body(char* buffer, size_t size, size_t count, void* user) {
 
 // The server did not answer (no connection, or none within the timeout), as
 // opposed to answering "no".
+// (A server that drops a connection mid-transfer, e.g. refusing a large
+// upload, answered: it is not given up on.)
 bool unanswered(CURLcode rc) {
   return rc == CURLE_OPERATION_TIMEDOUT || rc == CURLE_COULDNT_CONNECT || rc == CURLE_COULDNT_RESOLVE_HOST ||
-         rc == CURLE_COULDNT_RESOLVE_PROXY || rc == CURLE_GOT_NOTHING || rc == CURLE_RECV_ERROR ||
-         rc == CURLE_SEND_ERROR;
+         rc == CURLE_COULDNT_RESOLVE_PROXY;
 }
 
 // GET: the body on 200, else nullopt; `too_large` when a 200's body was
@@ -122,8 +123,17 @@ std::string sha256_hex(std::string_view bytes) {
   return hex;
 }
 
-HttpCache::HttpCache(std::string base_url, long timeout_ms)
-    : base_url_(std::move(base_url)), timeout_ms_(timeout_ms), down_(std::make_shared<std::atomic<bool>>(false)) {
+std::shared_ptr<std::atomic<bool>> RemoteServers::down_flag(const std::string& url) {
+  std::lock_guard lock(mutex_);
+  std::shared_ptr<std::atomic<bool>>& flag = down_[url];
+  if (!flag) flag = std::make_shared<std::atomic<bool>>(false);
+  return flag;
+}
+
+HttpCache::HttpCache(std::string base_url, long timeout_ms, std::shared_ptr<std::atomic<bool>> down)
+    : base_url_(std::move(base_url)),
+      timeout_ms_(timeout_ms),
+      down_(down ? std::move(down) : std::make_shared<std::atomic<bool>>(false)) {
   while (!base_url_.empty() && base_url_.back() == '/') base_url_.pop_back();
 }
 

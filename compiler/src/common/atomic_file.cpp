@@ -61,9 +61,11 @@ std::optional<Result<void, std::string>> write_special_target(const std::string&
   if (probe < 0) {
     return unexpected(errno == ENXIO ? std::string("it is a FIFO that no process is reading") : error_text(errno));
   }
-  Result<void, std::string> written = write(target);
-  ::close(probe);
-  return written;
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{probe};
+  return write(target);
 }
 
 }  // namespace

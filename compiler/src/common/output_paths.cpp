@@ -8,7 +8,9 @@ namespace fs = std::filesystem;
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   const bool a_exists = fs::exists(a, ec), b_exists = fs::exists(b, ec);
-  if (a_exists && b_exists) return fs::equivalent(a, b, ec) && !ec;
+  // A character device or a FIFO is written in place (atomic_file.h):
+  // naming one twice (`-o /dev/null -MF /dev/null`) destroys nothing.
+  if (a_exists && b_exists) return fs::is_regular_file(a, ec) && fs::equivalent(a, b, ec) && !ec;
   if (a_exists != b_exists) return false;
   fs::path canonical_a = fs::weakly_canonical(fs::absolute(a, ec), ec);
   if (ec) return false;

@@ -93,10 +93,10 @@ uint64_t stripped_in(const std::vector<variants::VariantSet>& sets) {
   return n;
 }
 
-cache::CacheStores cache_stores(const CompileOptions& options) {
+cache::CacheStores cache_stores(const CompileOptions& options, cache::RemoteServers& servers) {
   cache::CacheStores stores;
   if (!options.cache_dir.empty()) stores.local.emplace(options.cache_dir);
-  if (!options.cache_url.empty()) stores.remote.emplace(options.cache_url);
+  if (!options.cache_url.empty()) stores.remote.emplace(options.cache_url, 10000, servers.down_flag(options.cache_url));
   return stores;
 }
 
@@ -205,6 +205,7 @@ bool assemble_package(const BuildContext& ctx, Plan& plan, CompiledShader& out, 
 // What the build-farm calls need of a Compiler beyond its public calls.
 struct CompilerInternals {
   static const backend::Backend& backend(const Compiler& compiler) { return compiler.backend_; }
+  static cache::RemoteServers& remote_servers(const Compiler& compiler) { return *compiler.remote_servers_; }
 };
 
 Result<std::vector<ProgramJob>> program_jobs(const Compiler& compiler, const ir::Shader& shader,
@@ -229,7 +230,7 @@ Result<std::vector<ProgramJob>> program_jobs(const Compiler& compiler, const ir:
 
 Result<bool> compile_program(const Compiler& compiler, const ir::Shader& shader, const CompileOptions& options,
                              const ProgramJob& job, SourceMap& sources, Diagnostics& diags) {
-  const cache::CacheStores stores = cache_stores(options);
+  const cache::CacheStores stores = cache_stores(options, CompilerInternals::remote_servers(compiler));
   if (!stores.any()) {
     diags.add(DiagId::driver_bad_option, {}, "a program job compiles into the cache: give --cache-dir or --remote-cache");
     return failure("no cache");
@@ -336,7 +337,7 @@ Result<CompiledShader> Compiler::compile(const ir::Shader& shader, const Compile
   auto sets = select_variant_sets(*this, *passes, options, diags);
   FACET_TRY(sets);
 
-  const cache::CacheStores stores = cache_stores(options);
+  const cache::CacheStores stores = cache_stores(options, *remote_servers_);
   const BuildContext ctx{shader, options, sources, backend_, *passes, stores, driver::worker_count(options.jobs)};
   Plan plan = driver::plan_tasks(*passes, std::move(*sets));
   phases.select = seconds_since_lap();

@@ -222,7 +222,7 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
   }
 
   std::vector<ShaderCheck> checks;
-  std::vector<RunInput> read;
+  std::set<std::string> read;
   size_t passed = 0, warnings = 0;
   for (size_t i = 0; i < paths.size(); ++i) {
     Checked c;
@@ -243,7 +243,7 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
     passed += c.check.ok ? 1 : 0;
     warnings += c.check.warnings;
     checks.push_back(std::move(c.check));
-    add_inputs(read, c.read, "a file a checked shader read");
+    read.insert(c.read.begin(), c.read.end());
   }
   for (std::thread& t : threads) t.join();
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -251,7 +251,9 @@ int run_check(const FacetcArgs& args, const Compiler& compiler, const StripInput
 
   // The includes and the shaders a UsePass or Fallback named are known only
   // now: a report that would replace one of them is not written.
-  if (auto clash = output_input_clash({args.junit_file, args.sarif_file}, read)) {
+  std::vector<RunInput> read_inputs;
+  add_inputs(read_inputs, {read.begin(), read.end()}, "a file a checked shader read");
+  if (auto clash = output_input_clash({args.junit_file, args.sarif_file}, read_inputs)) {
     console.err << "facetc: error: " << *clash << "\n";
     return 1;
   }

@@ -62,9 +62,9 @@ Result<ShaderAsset*, Diagnostics> ShaderLibrary::load(const std::string& path) {
   Diagnostics diags;
   if (is_package_path(path)) {
     Result<package::Package> pkg = read_package_file(path, diags);
-    if (pkg && compiler_ && compiler_->check_package && !compiler_->check_package(*pkg, path, diags)) pkg = failure();
     if (!pkg) return unexpected(rebase_diagnostics(diags, asset->sources, report_));
     adopt_package(*asset, std::move(*pkg));
+    asset->from_file = true;
     ShaderAsset* raw = asset.get();
     shaders_[path] = std::move(asset);
     return raw;
@@ -204,6 +204,21 @@ Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::compiled_vari
   return variant;
 }
 
+Result<void, Diagnostics> ShaderLibrary::check_modules(ShaderAsset& asset, const package::PackageVariant& variant) {
+  if (!asset.from_file || !compiler_ || !compiler_->spirv_problem) return {};
+  for (const package::PackageStage& stage : variant.stages) {
+    if (asset.valid_modules.count(stage.blob)) continue;
+    if (std::optional<std::string> why = compiler_->spirv_problem(asset.package->spirv_blobs.at(stage.blob))) {
+      return unexpected(render_error(fmt::format("{}: SPIR-V module {} is not valid SPIR-V, so it is not given to "
+                                                 "the driver ({})",
+                                                 asset.path, stage.blob, *why),
+                                     DiagId::shader_unavailable));
+    }
+    asset.valid_modules.insert(stage.blob);
+  }
+  return {};
+}
+
 Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::packaged_variant(const Context& context,
                                                                                     ShaderAsset& asset, size_t pass,
                                                                                     const variants::VariantKey& key,
@@ -211,6 +226,7 @@ Result<std::unique_ptr<LoadedVariant>, Diagnostics> ShaderLibrary::packaged_vari
   const std::vector<package::PackageVariant>& built = asset.package->passes[pass].variants;
   auto found = std::find_if(built.begin(), built.end(), [&](const package::PackageVariant& v) { return v.key == key; });
   if (found == built.end()) return on_demand_variant(context, asset, pass, key, compiled);
+  if (Result<void, Diagnostics> checked = check_modules(asset, *found); !checked) return unexpected(checked.error());
   auto variant = std::make_unique<LoadedVariant>();
   variant->keywords = found->keywords;
   Result<std::unique_ptr<GpuProgram>, std::string> program = create_program(context, *asset.package, *found);

@@ -53,6 +53,10 @@ struct ShaderAsset {
   // selection rule.
   std::optional<package::Package> package;
   std::vector<std::vector<variants::VariantKey>> available;
+  // Read from a .facetpkg file (not built in): its modules are checked
+  // (ShaderCompiler::spirv_problem) as draws first need them.
+  bool from_file = false;
+  std::set<uint32_t> valid_modules;  // blob indices checked
   // A package's .shader, found by the shader's name through the development
   // layer on the first draw the package has no exact variant for: the
   // variants it lacks are compiled from it.
@@ -127,6 +131,8 @@ class ShaderLibrary {
   const std::vector<std::string>& misses() const { return misses_; }
 
  private:
+  // The variant's modules of a package file, checked once each before the driver sees them.
+  Result<void, Diagnostics> check_modules(ShaderAsset& asset, const package::PackageVariant& variant);
   Result<std::unique_ptr<LoadedVariant>, Diagnostics> packaged_variant(const Context& context, ShaderAsset& asset,
                                                                        size_t pass, const variants::VariantKey& key,
                                                                        bool* compiled);

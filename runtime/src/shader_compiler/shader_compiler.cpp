@@ -13,20 +13,11 @@
 namespace facet::runtime {
 namespace {
 
-// spirv-val over every module of `package`; the first invalid one is an
-// error naming the package (a compile's own modules pass: it validated
-// them, but one from a cache entry may have been edited there).
-Result<void> check_modules(const package::Package& package, const std::string& path, Diagnostics& diags) {
-  for (size_t i = 0; i < package.spirv_blobs.size(); ++i) {
-    Diagnostics found;
-    if (backend::validate(package.spirv_blobs[i], backend::TargetEnv::vulkan1_2, found)) continue;
-    std::string why = found.all().empty() ? std::string("spirv-val refused it") : found.all()[0].message;
-    diags.add(
-        DiagId::shader_unavailable, SourceSpan{},
-        fmt::format("{}: SPIR-V module {} is not valid SPIR-V, so it is not given to the driver ({})", path, i, why));
-    return failure();
-  }
-  return {};
+// spirv-val's first message about `module`, or nullopt when it is valid.
+std::optional<std::string> spirv_problem(const std::vector<uint32_t>& module) {
+  Diagnostics found;
+  if (backend::validate(module, backend::TargetEnv::vulkan1_2, found)) return std::nullopt;
+  return found.all().empty() ? std::string("spirv-val refused it") : found.all()[0].message;
 }
 
 }  // namespace
@@ -64,11 +55,21 @@ std::shared_ptr<const ShaderCompiler> make_shader_compiler(const ShaderCompilerO
     compile_options.backend.include_dirs = options.include_dirs;
     Result<CompiledShader> compiled = compiler->compile(shader, compile_options, sources, diags);
     if (!compiled) return failure();
-    if (!options.cache_dir.empty()) FACET_TRY(check_modules(compiled->package, sources.path(shader.file), diags));
+    // A compile validates its own modules; one from a cache entry may have
+    // been edited there.
+    for (size_t i = 0; !options.cache_dir.empty() && i < compiled->package.spirv_blobs.size(); ++i) {
+      if (std::optional<std::string> why = spirv_problem(compiled->package.spirv_blobs[i])) {
+        diags.add(DiagId::shader_unavailable, SourceSpan{},
+                  fmt::format("{}: SPIR-V module {} from the compile cache '{}' is not valid SPIR-V, so it is not "
+                              "given to the driver ({})",
+                              sources.path(shader.file), i, options.cache_dir, *why));
+        return failure();
+      }
+    }
     return CompiledPassVariant{std::move(compiled->package),
                                {compiled->dependencies.begin(), compiled->dependencies.end()}};
   };
-  out->check_package = check_modules;
+  out->spirv_problem = spirv_problem;
   if (!options.shader_dirs.empty()) {
     std::vector<ShaderDir> dirs;
     for (const std::string& dir : options.shader_dirs) dirs.push_back({dir, true});

@@ -72,15 +72,19 @@ TEST(CacheHttpTest, AServerThatNeverAnswersCostsOneTimeoutNotOneARequest) {
   ASSERT_EQ(::listen(listener, 64), 0);  // connections complete in the backlog, unanswered
   socklen_t length = sizeof address;
   ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
-  HttpCache remote("http://127.0.0.1:" + std::to_string(ntohs(address.sin_port)), 500);
+  const std::string url = "http://127.0.0.1:" + std::to_string(ntohs(address.sin_port));
+  RemoteServers servers;  // a Compiler's, shared by its builds
+  HttpCache remote(url, 500, servers.down_flag(url));
   EXPECT_FALSE(remote.down());
   EXPECT_FALSE(remote.load_bytes("0123456789abcdef0123456789abcdef").bytes);
   EXPECT_TRUE(remote.down());
-  HttpCache copy = remote;  // the build's stores share what was learnt
+  HttpCache next_build(url, 500, servers.down_flag(url));
+  EXPECT_TRUE(next_build.down());
   for (int i = 0; i < 20; ++i) {
-    EXPECT_FALSE(copy.load_bytes("0123456789abcdef0123456789abcdef").bytes);
-    EXPECT_FALSE(copy.store_bytes("0123456789abcdef0123456789abcdef", "x"));
+    EXPECT_FALSE(next_build.load_bytes("0123456789abcdef0123456789abcdef").bytes);
+    EXPECT_FALSE(next_build.store_bytes("0123456789abcdef0123456789abcdef", "x"));
   }
+  EXPECT_FALSE(HttpCache(url, 500, servers.down_flag(url + "/other")).down()) << "another server's flag";
   // Every request would have left a connection in the backlog: one did.
   ASSERT_EQ(::fcntl(listener, F_SETFL, O_NONBLOCK), 0);
   int connections = 0;

@@ -1,5 +1,6 @@
 // The one atomic file writer: outputs appear whole or not at all, and no
 // temporary is left behind, whatever fails.
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -109,6 +110,7 @@ TEST_F(AtomicFileTest, AFifoThatAProcessReadsReceivesTheBytes) {
     written = write_file_atomically(fifo, "streamed bytes");
     if (!written) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  if (!written) ::close(::open(fifo.c_str(), O_WRONLY | O_NONBLOCK));  // lets the reader's open return
   reader.join();
   ASSERT_TRUE(written) << written.error();
   EXPECT_EQ(received, "streamed bytes");

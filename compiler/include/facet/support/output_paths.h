@@ -12,7 +12,9 @@ namespace facet::support {
 
 // By identity (device and inode) when both exist, so that another spelling
 // or a hard link counts; by the absolute, normalised path with symbolic
-// links resolved otherwise (an output not written yet).
+// links resolved otherwise (an output not written yet). A file that exists
+// and is not a regular file (`/dev/null`) is written in place, so naming it
+// twice is no clash.
 bool same_file(const std::string& a, const std::string& b);
 
 // The first two of `outputs` that name one file; empty names and "-"

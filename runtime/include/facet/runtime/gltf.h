@@ -32,10 +32,11 @@ namespace facet::runtime {
 struct GltfLimits {
   uint64_t max_file_bytes = uint64_t(1) << 30;  // the .gltf/.glb and each external buffer
   // Of the whole model, after node instancing: a vertex takes about 400
-  // bytes across the loader's, the renderer's and the driver's copies, so
-  // these keep a model under 2 GB.
+  // bytes across the loader's, the renderer's and the driver's copies, and
+  // a primitive without normals gets a vertex a corner, so these keep a
+  // model under 2 GB.
   uint64_t max_vertices = uint64_t(1) << 21;
-  uint64_t max_triangle_corners = uint64_t(1) << 23;
+  uint64_t max_triangle_corners = uint64_t(1) << 22;
   uint32_t max_node_depth = 64;  // of the node hierarchy
 };
 

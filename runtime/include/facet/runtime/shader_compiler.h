@@ -7,6 +7,7 @@
 // whose variants are compiled when a draw first needs them.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -51,14 +52,13 @@ struct ShaderCompiler {
   // for in ShaderCompilerOptions::shader_dirs: where the renderer compiles a
   // variant that a package lacks. nullopt when no file declares it.
   std::function<std::optional<std::string>(const std::string& name)> find;
-  // Checks what a package file holds before its SPIR-V reaches the driver:
-  // a package's checksum finds damage, not an edit whose checksum was
-  // recomputed (its seed is public), and drivers crash on invalid SPIR-V.
-  // The development layer runs spirv-val over every module; empty (a runtime
-  // without the compiler), packages are trusted as any compiled code is.
-  // `path` names the package in the message.
-  std::function<Result<void>(const package::Package& package, const std::string& path, Diagnostics& diags)>
-      check_package;
+  // Why a SPIR-V module of a package file may not reach the driver, or
+  // nullopt: a package's checksum finds damage, not an edit whose checksum
+  // was recomputed (its seed is public), and drivers crash on invalid
+  // SPIR-V. The development layer runs spirv-val (its first message), on
+  // each module the first time a draw needs it; empty (a runtime without
+  // the compiler), packages are trusted as any compiled code is.
+  std::function<std::optional<std::string>(const std::vector<uint32_t>& module)> spirv_problem;
   // The stdlib's folder (its Shaders/ holds the procedural sky).
   std::string stdlib_dir;
 };
