@@ -141,7 +141,8 @@ bool LocalCache::store_bytes(const std::string& key, std::string_view bytes) con
   if (ec) return false;
   // Atomic: readers see the old entry or the new one. A directory (or
   // anything else) in the entry's place makes the rename fail: no store.
-  return bool(support::write_file_atomically(target.string(), bytes));
+  // What stands in an entry's place (a FIFO, a device) is replaced, as a corrupt entry is.
+  return bool(support::write_file_atomically(target.string(), bytes, support::SpecialTarget::replace));
 }
 
 }  // namespace facet::cache

@@ -71,8 +71,12 @@ std::optional<Result<void, std::string>> write_special_target(const std::string&
 }  // namespace
 
 Result<void, std::string> replace_file_atomically(
-    const std::string& target, const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary) {
-  if (auto special = write_special_target(target, write_temporary)) return std::move(*special);
+    const std::string& target,
+    const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary,
+    SpecialTarget special) {
+  if (special == SpecialTarget::write_in_place) {
+    if (auto written = write_special_target(target, write_temporary)) return std::move(*written);
+  }
   Result<std::string, std::string> temporary = create_temporary(fs::path(target));
   if (!temporary) return unexpected(temporary.error());
   std::error_code ignored;
@@ -91,15 +95,19 @@ Result<void, std::string> replace_file_atomically(
   return {};
 }
 
-Result<void, std::string> write_file_atomically(const std::string& target, std::string_view bytes) {
-  return replace_file_atomically(target, [&](const std::string& temporary) -> Result<void, std::string> {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) return unexpected(error_text(errno));
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) return unexpected(std::string("the write failed"));
-    return {};
-  });
+Result<void, std::string> write_file_atomically(const std::string& target, std::string_view bytes,
+                                                SpecialTarget special) {
+  return replace_file_atomically(
+      target,
+      [&](const std::string& temporary) -> Result<void, std::string> {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) return unexpected(error_text(errno));
+        out.write(bytes.data(), std::streamsize(bytes.size()));
+        out.close();
+        if (!out) return unexpected(std::string("the write failed"));
+        return {};
+      },
+      special);
 }
 
 }  // namespace facet::support

@@ -131,6 +131,15 @@ TEST_F(AtomicFileTest, AFifoNobodyReadsIsAnErrorNotAHang) {
   EXPECT_THAT(files(), ::testing::ElementsAre("pipe"));
 }
 
+// A cache entry's place held by a FIFO is repaired: facet's own files replace what stands there.
+TEST_F(AtomicFileTest, AFifoInTheWayOfFacetsOwnFileIsReplaced) {
+  std::string fifo = (dir_ / "entry").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0);
+  ASSERT_TRUE(write_file_atomically(fifo, "entry bytes", SpecialTarget::replace));
+  EXPECT_TRUE(fs::is_regular_file(fifo));
+  EXPECT_EQ(read(fifo), "entry bytes");
+}
+
 TEST_F(AtomicFileTest, AMissingFolderIsAnErrorNamingWhy) {
   Result<void, std::string> written = write_file_atomically((dir_ / "no" / "such" / "x.bin").string(), "bytes");
   ASSERT_FALSE(written);

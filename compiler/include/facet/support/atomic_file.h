@@ -19,14 +19,24 @@ namespace facet::support {
 // target never share a temporary.
 // On any failure the temporary is removed and the error is a reason without
 // the target's name, for the caller to place.
-// A target that exists and is no regular file is never replaced: a
-// character device (`-o /dev/null`) or a FIFO that a process reads is given
-// to `write_temporary` itself, and is written in place; a FIFO nobody reads,
-// a folder, a socket or a block device is an error.
+// What becomes of a target that exists and is no regular file.
+enum class SpecialTarget {
+  // A user's output: never replaced. A character device (`-o /dev/null`) or
+  // a FIFO that a process reads is given to `write_temporary` itself and
+  // written in place; a FIFO nobody reads, a folder, a socket or a block
+  // device is an error.
+  write_in_place,
+  // A file of facet's own (a cache entry): whatever stands in its place is
+  // replaced, as a regular file would be (a folder still fails).
+  replace,
+};
 Result<void, std::string> replace_file_atomically(
-    const std::string& target, const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary);
+    const std::string& target,
+    const std::function<Result<void, std::string>(const std::string& temporary)>& write_temporary,
+    SpecialTarget special = SpecialTarget::write_in_place);
 
 // `bytes` as the whole content of `target`, through replace_file_atomically.
-Result<void, std::string> write_file_atomically(const std::string& target, std::string_view bytes);
+Result<void, std::string> write_file_atomically(const std::string& target, std::string_view bytes,
+                                                SpecialTarget special = SpecialTarget::write_in_place);
 
 }  // namespace facet::support
